@@ -1,0 +1,102 @@
+// The engine's public face: options, counters, and EngineApi<T>, created by make_engine<T>().
+//
+// make_engine looks at the effects a scene uses (walls or periodic; elastic, inelastic, or inelastic with
+// the TC model) once, and returns the one Engine instantiation built for exactly that combination: an
+// elastic gas runs code in which restitution and TC do not exist. The virtual calls here happen per run()
+// call, never per event. The scalar type T (float, double, long double) is the caller's choice.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ede/initial_state.hpp"
+#include "ede/particles.hpp"
+#include "ede/result.hpp"
+#include "ede/scene.hpp"
+#include "ede/sink.hpp"
+
+namespace ede {
+
+enum class RunStatus {
+  Running,            // run() returned because its event budget was used; call it again
+  ReachedTime,        // stop.time reached (the state is reported at exactly that time)
+  ReachedEvents,      // stop.events processed
+  ReachedCollisions,  // stop.collisions_per_particle reached
+  ReachedEnergy,      // kinetic energy fell to stop.energy_fraction of the initial
+  NoMoreEvents,       // nothing will ever happen again (every disk at rest, or moving freely forever)
+  Stalled,            // time stopped advancing: inelastic collapse; see stall_message()
+};
+const char* to_string(RunStatus);
+bool is_finished(RunStatus);
+
+enum class Algorithm {
+  Cells,     // uniform grid + per-particle lazy state + one event per particle: O(log N) per event
+  AllPairs,  // the naive baseline: after each event, the disks involved are checked against all N others
+};
+
+struct EngineOptions {
+  BoundaryKind boundary = BoundaryKind::Walls;
+  PhysicsSpec physics;
+  StopSpec stop;
+  std::optional<double> sample_interval;
+  std::vector<ActionSpec> actions;      // sorted by time
+  Algorithm algorithm = Algorithm::Cells;
+  // Every this many events the predictions are rebuilt from the state alone, a point a run can be resumed
+  // from bit for bit (0: only at start and after actions).
+  std::uint64_t rebuild_interval = 0;
+  // Give up (RunStatus::Stalled) after this many consecutive events at one and the same time
+  // (0: max(10^6, 100 N)).
+  std::uint64_t stall_limit = 0;
+};
+
+EngineOptions engine_options_from(const Scene& scene);
+
+struct EventCounts {
+  std::uint64_t by_kind[kEventKindCount] = {};
+  std::uint64_t stale = 0;       // predictions popped after a participant had changed: discarded
+  std::uint64_t tc_elastic = 0;  // collisions made elastic by the TC model
+
+  std::uint64_t of(EventKind k) const { return by_kind[static_cast<int>(k)]; }
+  std::uint64_t collisions() const { return of(EventKind::Pair) + of(EventKind::Wall); }
+  // Processed events: everything but samples and stale predictions (what stop.events counts).
+  std::uint64_t events() const {
+    return of(EventKind::Pair) + of(EventKind::Wall) + of(EventKind::Cell) + of(EventKind::Wrap) +
+           of(EventKind::Action);
+  }
+};
+
+template <class T>
+class EngineApi {
+ public:
+  virtual ~EngineApi() = default;
+  // Sinks are called in the order added; the caller keeps them alive for the engine's lifetime.
+  virtual void add_sink(Sink<T>* sink) = 0;
+  // Processes events until a stop condition holds (returns it) or max_events more events were processed
+  // (returns Running). The first call reports the initial state to sinks (on_start).
+  virtual RunStatus run(std::uint64_t max_events = std::numeric_limits<std::uint64_t>::max()) = 0;
+  virtual T time() const = 0;
+  virtual const Particles<T>& particles() const = 0;
+  virtual const EventCounts& counts() const = 0;
+  virtual std::string effects() const = 0;        // e.g. "walls, inelastic (xi=0.5, xi_w=1), TC (tc=1e-4)"
+  virtual std::string stall_message() const = 0;  // why the run stalled, and what would fix it
+  virtual std::size_t memory_bytes() const = 0;   // bytes held by the engine's own arrays
+  virtual double initial_kinetic_energy() const = 0;
+  // Debug and test aid, O(N): pairs overlapping by more than `tolerance` of their contact distance and
+  // predictions in the past, described; empty when all is well.
+  virtual std::string check_invariants(double tolerance) const = 0;
+};
+
+template <class T>
+Result<std::unique_ptr<EngineApi<T>>> make_engine(const InitialState& initial, const EngineOptions& options);
+
+// Sums over a state at time t, accumulated in long double whatever T is.
+template <class T>
+double kinetic_energy(const Particles<T>& p);
+template <class T>
+void momentum(const Particles<T>& p, double& px, double& py);
+
+}  // namespace ede

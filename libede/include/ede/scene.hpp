@@ -1,0 +1,105 @@
+// The Scene: everything a run needs, as plain data, before any particle exists.
+//
+// A Scene is what a scene file (TOML, see docs/scene-format.md) says after overrides and validation. All
+// numbers are doubles here whatever scalar type the engine later runs in: setup draws the initial state in
+// double, so float, double and long double runs of one scene start from the same disks (up to rounding).
+// Rejected: letting the TOML tree flow into setup and the engine; every consumer would re-check types.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ede {
+
+enum class BoundaryKind { Walls, Periodic };
+enum class ScalarKind { Float, Double, LongDouble };
+
+struct Region {  // axis-aligned rectangle [x0, x1] x [y0, y1]
+  double x0 = 0, y0 = 0, x1 = 1, y1 = 1;
+  double width() const { return x1 - x0; }
+  double height() const { return y1 - y0; }
+  double area() const { return width() * height(); }
+};
+
+struct RadiusSpec {  // fixed when min == max, else uniform in [min, max]
+  double min = 0;
+  double max = 0;
+  bool from_packing = false;  // radius not given: set from placement.packing_fraction
+};
+
+struct MassSpec {
+  enum class Kind { Fixed, PerArea } kind = Kind::Fixed;
+  double value = 1;  // the mass, or the areal density (mass = value * pi * r^2)
+};
+
+enum class PlacementKind { Random, Lattice, Explicit };
+enum class LatticeKind { Hexagonal, Square };
+
+struct PlacementSpec {
+  PlacementKind kind = PlacementKind::Random;
+  Region region;                            // random and lattice: where the disks go (whole disks inside)
+  std::optional<double> packing_fraction;   // random and lattice: sets the radius (count disks fill it)
+  LatticeKind lattice = LatticeKind::Hexagonal;
+  std::vector<std::array<double, 2>> positions;  // explicit: one [x, y] per disk
+};
+
+enum class VelocityKind { Zero, Speed, Vector, Maxwell, List };
+
+struct VelocitySpec {
+  VelocityKind kind = VelocityKind::Zero;
+  double speed = 0;                          // Speed: |v| for every disk, direction uniform at random
+  std::array<double, 2> vector{0, 0};        // Vector: the same v for every disk
+  double temperature = 0;                    // Maxwell: kT (k = 1), each component ~ N(0, kT/m)
+  std::vector<std::array<double, 2>> list;   // List: one [vx, vy] per disk
+};
+
+struct SpeciesSpec {
+  std::string name;
+  std::int64_t count = 0;
+  RadiusSpec radius;
+  MassSpec mass;
+  PlacementSpec placement;
+  VelocitySpec velocity;
+};
+
+struct StopSpec {  // the run ends at the first condition met; at least one must be given
+  std::optional<double> time;                     // simulated time
+  std::optional<std::uint64_t> events;            // processed events of every kind but samples
+  std::optional<double> collisions_per_particle;  // 2 * (pair collisions) / N
+  std::optional<double> energy_fraction;          // kinetic energy <= fraction * initial
+};
+
+enum class ActionKind { ReverseVelocities };
+
+struct ActionSpec {
+  double time = 0;
+  ActionKind kind = ActionKind::ReverseVelocities;
+};
+
+struct PhysicsSpec {
+  double restitution = 1;       // xi for pair collisions, in [0, 1]
+  double wall_restitution = 1;  // xi_w for wall collisions, in [0, 1]
+  double tc = 0;                // TC model: a collision within tc of a participant's previous one is elastic
+};
+
+struct Scene {
+  std::string source_name;   // file name (or "<text>") for messages
+  std::string source_text;   // the effective scene as TOML, after --set overrides: what was run
+  std::uint64_t seed = 1;
+  double lx = 1, ly = 1;
+  BoundaryKind boundary = BoundaryKind::Walls;
+  PhysicsSpec physics;
+  ScalarKind scalar = ScalarKind::Double;
+  std::vector<SpeciesSpec> species;
+  StopSpec stop;
+  std::optional<double> sample_interval;  // observers see the exact state at k * interval, k = 1, 2, ...
+  std::vector<ActionSpec> actions;        // sorted by time
+};
+
+const char* to_string(BoundaryKind);
+const char* to_string(ScalarKind);
+
+}  // namespace ede

@@ -1,0 +1,50 @@
+// What the engine itself requires of its input, beyond what setup already checked for a scene: sizes the
+// queue can index, finite numbers, and a periodic box at least three cells wide.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "engine_factory.hpp"
+
+namespace ede {
+
+namespace {
+bool finite(double v) { return std::isfinite(v); }
+}  // namespace
+
+Status check_engine_input(const InitialState& init, const EngineOptions& options, GridShape& shape) {
+  const std::size_t n = init.size();
+  if (n == 0) return Error{"the initial state has no disks; add a species with count >= 1"};
+  if (n >= kMaxQueueDisks) {
+    std::ostringstream m;
+    m << "the initial state has " << n << " disks; the engine supports fewer than " << kMaxQueueDisks;
+    return Error{m.str()};
+  }
+  if (!(init.lx > 0) || !(init.ly > 0) || !finite(init.lx) || !finite(init.ly))
+    return Error{"the box size must be positive and finite"};
+  double max_radius = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!finite(init.x[i]) || !finite(init.y[i]) || !finite(init.vx[i]) || !finite(init.vy[i]) ||
+        !(init.radius[i] > 0) || !finite(init.radius[i]) || !(init.mass[i] > 0) || !finite(init.mass[i])) {
+      std::ostringstream m;
+      m << "disk " << i << " has a non-finite value or a non-positive radius or mass";
+      return Error{m.str()};
+    }
+    max_radius = std::max(max_radius, init.radius[i]);
+  }
+  const PhysicsSpec& ph = options.physics;
+  if (!(ph.restitution >= 0 && ph.restitution <= 1) || !(ph.wall_restitution >= 0 && ph.wall_restitution <= 1))
+    return Error{"restitution coefficients must lie in [0, 1]"};
+  if (!(ph.tc >= 0) || !finite(ph.tc)) return Error{"tc must be finite and >= 0"};
+  const bool periodic = options.boundary == BoundaryKind::Periodic;
+  if (periodic && (init.lx < 3 * 2 * max_radius * (1 + 1e-6) || init.ly < 3 * 2 * max_radius * (1 + 1e-6))) {
+    std::ostringstream m;
+    m << "a periodic box must be at least three largest diameters wide on each side (largest diameter "
+      << 2 * max_radius << ", box " << init.lx << " x " << init.ly << "); enlarge the box or use walls";
+    return Error{m.str()};
+  }
+  shape = grid_shape_for(init.lx, init.ly, max_radius, n, periodic, options.algorithm);
+  return Ok{};
+}
+
+}  // namespace ede

@@ -1,0 +1,548 @@
+// Engine<T, Boundary, Dissipation>: the event-driven hard-disk engine, one instantiation per effect set.
+//
+// The loop: take the earliest of (next disk event, next sample, next action, stop time); for a disk event,
+// discard it if its partner changed since it was predicted (collision counters), else bring the disks
+// involved to the event time (lazy state: nobody else moves), resolve, tell the sinks, re-predict those
+// disks only. Each disk holds one prediction (its earliest collision, wall hit, or cell crossing), so the
+// queue has N keys and a prediction looks at the 3 x 3 cells around the disk: the cost per event does not
+// depend on N. Disks at rest predict nothing and cost nothing until something approaches them.
+// Rejected: storing every predicted pair event (the queue grows with density and fills with stale events)
+// and updating every disk to the current time at each event (O(N) per event).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "candidate.hpp"
+#include "cell_grid.hpp"
+#include "collide.hpp"
+#include "ede/engine.hpp"
+#include "ede/initial_state.hpp"
+#include "effects.hpp"
+#include "event_queue.hpp"
+#include "predict_crossing.hpp"
+#include "predict_pair.hpp"
+#include "predict_wall.hpp"
+
+namespace ede {
+
+// Grid dimensions for a box and largest radius: cells at least one largest diameter wide (with a margin
+// far above round-off), at most ~4 cells per disk (dilute scenes need no finer grid), at least 3 per side
+// in a periodic box (so the 3 x 3 neighbourhood holds distinct cells and each has one image).
+struct GridShape {
+  std::int32_t nx = 1, ny = 1;
+};
+GridShape grid_shape_for(double lx, double ly, double max_radius, std::size_t disks, bool periodic,
+                         Algorithm algorithm);
+
+template <class T, class Boundary, class Dissipation>
+class Engine final : public EngineApi<T> {
+  static constexpr bool kPeriodic = Boundary::kPeriodic;
+  static constexpr bool kInelastic = Dissipation::kInelastic;
+  static constexpr bool kTc = Dissipation::kTc;
+
+  // One disk's current prediction: its earliest collision (pair or wall) and its cell crossing, kept
+  // apart so a crossing can update the collision part with the new neighbours only.
+  struct Prediction {
+    T t_coll;
+    T t_cross;
+    std::int32_t partner;           // disk id or WallId
+    std::uint32_t partner_counter;  // the partner's counter when predicted (pairs)
+    EventKind coll_kind;            // Pair or Wall
+    CrossDir cross_dir;
+  };
+
+ public:
+  Engine(const InitialState& init, const EngineOptions& options, GridShape shape) : opt_(options) {
+    load(init);
+    lx_ = T(init.lx);
+    ly_ = T(init.ly);
+    half_lx_ = lx_ / 2;
+    half_ly_ = ly_ / 2;
+    one_plus_xi_ = T(1) + T(options.physics.restitution);
+    xi_wall_ = T(options.physics.wall_restitution);
+    tc_ = T(options.physics.tc);
+    b_noise2_ = b_noise2_for(std::max(lx_, ly_));
+    grid_.reset(shape.nx, shape.ny, lx_, ly_, p_.size());
+    queue_.reset(static_cast<std::uint32_t>(p_.size()));
+    pred_.assign(p_.size(), Prediction{kNever<T>, kNever<T>, -1, 0, EventKind::Pair, kCrossRight});
+    stall_limit_ = options.stall_limit ? options.stall_limit
+                                       : std::max<std::uint64_t>(1000000, 100 * std::uint64_t(p_.size()));
+    if (options.stop.collisions_per_particle)
+      pairs_to_stop_ = static_cast<std::uint64_t>(std::ceil(*options.stop.collisions_per_particle * double(p_.size()) / 2));
+  }
+
+  void add_sink(Sink<T>* sink) override { sinks_.push_back(sink); }
+  T time() const override { return now_; }
+  const Particles<T>& particles() const override { return p_; }
+  const EventCounts& counts() const override { return counts_; }
+  double initial_kinetic_energy() const override { return ke0_; }
+  std::string stall_message() const override { return stall_message_; }
+
+  std::string effects() const override {
+    std::ostringstream s;
+    s << Boundary::kName << ", ";
+    if constexpr (kInelastic) {
+      s << "inelastic (xi=" << opt_.physics.restitution << ", xi_w=" << opt_.physics.wall_restitution << ")";
+      if constexpr (kTc) s << ", TC (tc=" << opt_.physics.tc << ")";
+    } else {
+      s << "elastic";
+    }
+    s << ", grid " << grid_.nx() << "x" << grid_.ny();
+    return s.str();
+  }
+
+  std::size_t memory_bytes() const override {
+    return p_.disk.capacity() * sizeof(Disk<T>) + p_.mass.capacity() * sizeof(T) +
+           p_.species.capacity() * sizeof(std::int32_t) + p_.counter.capacity() * sizeof(std::uint32_t) +
+           p_.last_collision.capacity() * sizeof(T) + p_.last_partner.capacity() * sizeof(std::int32_t) +
+           pred_.capacity() * sizeof(Prediction) + grid_.memory_bytes() + queue_.memory_bytes();
+  }
+
+  RunStatus run(std::uint64_t max_events) override {
+    if (status_ != RunStatus::Running) return status_;
+    if (!started_) start();
+    for (std::uint64_t done = 0; done < max_events;) {
+      const QueueKey<T> next = queue_.top();
+      const T t_sample = next_sample_time();
+      const T t_action = next_action_time();
+      const T t_stop = stop_time_;
+      if (next.time <= t_sample && next.time <= t_action && next.time <= t_stop && next.time != kNever<T>) {
+        if (!process_disk_event(next)) continue;  // stale prediction: not an event
+        ++done;
+        if (const RunStatus s = check_stops(); s != RunStatus::Running) return finish(s);
+        if (opt_.rebuild_interval && counts_.events() % opt_.rebuild_interval == 0) rebuild();
+      } else if (t_sample != kNever<T> && t_sample <= t_action && t_sample <= t_stop) {
+        sample(t_sample);
+      } else if (t_action != kNever<T> && t_action <= t_stop) {
+        reverse_velocities(t_action);
+        ++done;
+        if (const RunStatus s = check_stops(); s != RunStatus::Running) return finish(s);
+      } else if (t_stop != kNever<T>) {
+        now_ = t_stop;
+        return finish(RunStatus::ReachedTime);
+      } else {
+        return finish(RunStatus::NoMoreEvents);
+      }
+    }
+    return RunStatus::Running;
+  }
+
+  // Debug and test aid: every pair of disks overlapping by more than `tolerance` (relative to the contact
+  // distance) at the current time, and predictions in the past. Empty when all is well. O(N) with the grid.
+  std::string check_invariants(double tolerance) const override {
+    std::ostringstream problems;
+    const std::size_t n = p_.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      if (queue_.key_of(std::uint32_t(i)).time < now_) problems << "disk " << i << " has an event in the past; ";
+      const Position2<T> pi = position_at(p_.disk[i], now_);
+      for_each_neighbour(std::int32_t(i), grid_.cell_of(std::int32_t(i)), [&](std::int32_t k, T sx, T sy) {
+        if (std::size_t(k) <= i) return;
+        const Position2<T> pk = position_at(p_.disk[k], now_);
+        const double dx = double((pk.x + sx) - pi.x), dy = double((pk.y + sy) - pi.y);
+        const double s = double(p_.disk[i].r + p_.disk[k].r);
+        if (std::sqrt(dx * dx + dy * dy) < s * (1 - tolerance))
+          problems << "disks " << i << " and " << k << " overlap by " << (s - std::sqrt(dx * dx + dy * dy)) / s
+                   << " of their contact distance; ";
+      });
+    }
+    return problems.str();
+  }
+
+ private:
+  // --- state set-up -------------------------------------------------------------------------------
+  void load(const InitialState& init) {
+    const std::size_t n = init.size();
+    p_.disk.resize(n);
+    p_.mass.resize(n);
+    p_.species = init.species;
+    p_.counter.assign(n, 0);
+    p_.last_partner.assign(n, -1);
+    if constexpr (kTc) p_.last_collision.assign(n, -std::numeric_limits<T>::infinity());
+    for (std::size_t i = 0; i < n; ++i) {
+      p_.disk[i] = Disk<T>{T(init.x[i]), T(init.y[i]), T(init.vx[i]), T(init.vy[i]), T(0), T(init.radius[i])};
+      p_.mass[i] = T(init.mass[i]);
+    }
+    ke0_ = kinetic_energy(p_);
+    ke_ = ke0_;
+    if (opt_.stop.time) stop_time_ = T(*opt_.stop.time);
+  }
+
+  void start() {
+    started_ = true;
+    for (Sink<T>* s : sinks_) s->on_start(now_, p_);
+    rebuild();
+  }
+
+  // Rebuilds cells and every prediction from the state alone (positions at now_, last partners): the same
+  // state always gives the same queue, which is what makes a resumed run identical to an uninterrupted one.
+  void rebuild() {
+    grid_.reset(grid_.nx(), grid_.ny(), lx_, ly_, p_.size());
+    for (std::size_t i = 0; i < p_.size(); ++i) {
+      const Position2<T> pos = position_at(p_.disk[i], now_);
+      grid_.insert(std::int32_t(i), grid_.cell_containing(pos.x, pos.y));
+    }
+    for (std::size_t i = 0; i < p_.size(); ++i) predict(std::int32_t(i));
+    if constexpr (kInelastic) ke_ = kinetic_energy(p_);
+    for (Sink<T>* s : sinks_) s->on_rebuild(now_, p_);
+  }
+
+  // --- prediction ---------------------------------------------------------------------------------
+  // Calls f(k, shift_x, shift_y) for every disk k != i in the 3 x 3 cells around `cell`.
+  template <class F>
+  void for_each_neighbour(std::int32_t i, std::int32_t cell, F&& f) const {
+    const std::int32_t cx = grid_.cell_x(cell), cy = grid_.cell_y(cell);
+    for (std::int32_t dy = -1; dy <= 1; ++dy)
+      for (std::int32_t dx = -1; dx <= 1; ++dx) visit_cell(i, cx + dx, cy + dy, f);
+  }
+
+  // Calls f for every disk k != i in cell (cx, cy), wrapped in a periodic box (else skipped if outside).
+  template <class F>
+  void visit_cell(std::int32_t i, std::int32_t cx, std::int32_t cy, F&& f) const {
+    T sx = 0, sy = 0;
+    if (!wrap_index(cx, grid_.nx(), lx_, sx) || !wrap_index(cy, grid_.ny(), ly_, sy)) return;
+    for (std::int32_t k = grid_.head(grid_.cell_at(cx, cy)); k != CellGrid<T>::kNone; k = grid_.next(k))
+      if (k != i) f(k, sx, sy);
+  }
+
+  static bool wrap_index(std::int32_t& c, std::int32_t n, T length, T& shift) {
+    if (c >= 0 && c < n) return true;
+    if constexpr (!kPeriodic) {
+      return false;
+    } else {
+      shift = c < 0 ? -length : length;
+      c = c < 0 ? c + n : c - n;
+      return true;
+    }
+  }
+
+  // A pair that has just collided (each is the other's last partner, no velocity change since) cannot
+  // meet again through the image they collided in: straight lines cross a circle once on the way in.
+  // Skipping it keeps round-off from turning their separation into a spurious second collision at once.
+  bool just_collided(std::int32_t i, std::int32_t k, T dx, T dy) const {
+    if (p_.last_partner[i] != k || p_.last_partner[k] != i) return false;
+    if constexpr (kPeriodic) return std::abs(dx) <= half_lx_ && std::abs(dy) <= half_ly_;
+    return true;
+  }
+
+  // Best pair candidate of disk i against the disks of cell (cx, cy).
+  void scan_cell(std::int32_t i, Position2<T> pi, std::int32_t cx, std::int32_t cy, Candidate<T>& best) const {
+    const Disk<T>& di = p_.disk[i];
+    const std::int32_t lp = p_.last_partner[i];
+    visit_cell(i, cx, cy, [&](std::int32_t k, T sx, T sy) {
+      const Disk<T>& dk = p_.disk[k];
+      if (k == lp) {
+        const Position2<T> pk = position_at(dk, now_);
+        if (just_collided(i, k, (pk.x + sx) - pi.x, (pk.y + sy) - pi.y)) return;
+      }
+      const T t = predict_pair(di, pi, dk, sx, sy, now_, b_noise2_);
+      if (t > best.time) return;
+      const Candidate<T> c{t, EventKind::Pair, k};
+      if (c.before(best)) best = c;
+    });
+  }
+
+  // Full prediction for disk i at now_: walls, pairs in the 3 x 3 cells, cell crossing.
+  void predict(std::int32_t i) {
+    const Disk<T>& d = p_.disk[i];
+    Candidate<T> best;
+    if constexpr (!kPeriodic) best = predict_wall(d, lx_, ly_, now_);
+    const Position2<T> pi = position_at(d, now_);
+    const std::int32_t cell = grid_.cell_of(i);
+    const std::int32_t cx = grid_.cell_x(cell), cy = grid_.cell_y(cell);
+    for (std::int32_t dy = -1; dy <= 1; ++dy)
+      for (std::int32_t dx = -1; dx <= 1; ++dx) scan_cell(i, pi, cx + dx, cy + dy, best);
+    Prediction& pr = pred_[i];
+    pr.t_coll = best.time;
+    pr.coll_kind = best.kind;
+    pr.partner = best.partner;
+    pr.partner_counter = counter_of(best);
+    const Crossing<T> cross = predict_crossing(d, grid_, cell, kPeriodic, now_);
+    pr.t_cross = cross.time;
+    pr.cross_dir = cross.dir;
+    push(i);
+  }
+
+  std::uint32_t counter_of(const Candidate<T>& c) const {
+    return c.kind == EventKind::Pair && c.partner >= 0 ? p_.counter[c.partner] : 0;
+  }
+
+  void push(std::int32_t i) {
+    const Prediction& pr = pred_[i];
+    if (pr.t_coll <= pr.t_cross)
+      queue_.set(std::uint32_t(i), pr.t_coll, pr.coll_kind);
+    else
+      queue_.set(std::uint32_t(i), pr.t_cross, is_wrap(i, pr.cross_dir) ? EventKind::Wrap : EventKind::Cell);
+  }
+
+  bool is_wrap(std::int32_t i, CrossDir dir) const {
+    if constexpr (!kPeriodic) {
+      return false;
+    } else {
+      const std::int32_t cell = grid_.cell_of(i);
+      switch (dir) {
+        case kCrossRight: return grid_.cell_x(cell) == grid_.nx() - 1;
+        case kCrossLeft: return grid_.cell_x(cell) == 0;
+        case kCrossUp: return grid_.cell_y(cell) == grid_.ny() - 1;
+        case kCrossDown: return grid_.cell_y(cell) == 0;
+      }
+      return false;
+    }
+  }
+
+  // --- events -------------------------------------------------------------------------------------
+  // Returns false for a stale prediction (discarded, the disk re-predicted).
+  bool process_disk_event(const QueueKey<T>& key) {
+    const std::int32_t i = std::int32_t(tag_disk(key.tag));
+    const EventKind kind = tag_kind(key.tag);
+    const Prediction& pr = pred_[i];
+    if (kind == EventKind::Pair && p_.counter[pr.partner] != pr.partner_counter) {
+      ++counts_.stale;
+      now_ = key.time;
+      predict(i);
+      return false;
+    }
+    note_time(key.time);
+    now_ = key.time;
+    switch (kind) {
+      case EventKind::Pair: resolve_pair(i, pr.partner); break;
+      case EventKind::Wall: resolve_wall(i, pr.partner); break;
+      default: cross_cell(i, pr.cross_dir, kind); break;
+    }
+    return true;
+  }
+
+  void advance(std::int32_t i) {
+    Disk<T>& d = p_.disk[i];
+    d.x = drift(d.x, d.vx, d.t, now_);
+    d.y = drift(d.y, d.vy, d.t, now_);
+    d.t = now_;
+  }
+
+  // Within t_c of either disk's previous collision the TC model makes a collision elastic.
+  bool tc_elastic(std::int32_t i, std::int32_t j) const {
+    if constexpr (!kTc) {
+      return false;
+    } else {
+      if (now_ - p_.last_collision[i] < tc_) return true;
+      return j >= 0 && now_ - p_.last_collision[j] < tc_;
+    }
+  }
+
+  // The pair is resolved in the order (lower id, higher id) whichever disk owned the prediction, so the
+  // rounding of the result does not depend on who predicted it (cells and all-pairs engines agree).
+  void resolve_pair(std::int32_t i, std::int32_t j) {
+    if (j < i) std::swap(i, j);
+    advance(i);
+    advance(j);
+    Disk<T>& a = p_.disk[i];
+    Disk<T>& b = p_.disk[j];
+    T dx = b.x - a.x, dy = b.y - a.y;
+    if constexpr (kPeriodic) {
+      if (dx > half_lx_) dx -= lx_; else if (dx < -half_lx_) dx += lx_;
+      if (dy > half_ly_) dy -= ly_; else if (dy < -half_ly_) dy += ly_;
+    }
+    const bool by_tc = tc_elastic(i, j);
+    double ke_before = 0;
+    if constexpr (kInelastic) ke_before = pair_energy(i, j);
+    T one_plus_xi = T(2);
+    if constexpr (kInelastic) one_plus_xi = by_tc ? T(2) : one_plus_xi_;
+    collide_pair(dx, dy, p_.mass[i], p_.mass[j], one_plus_xi, a.vx, a.vy, b.vx, b.vy);
+    if constexpr (kInelastic) ke_ += pair_energy(i, j) - ke_before;
+    if constexpr (kTc) p_.last_collision[i] = p_.last_collision[j] = now_;
+    ++p_.counter[i];
+    ++p_.counter[j];
+    p_.last_partner[i] = j;
+    p_.last_partner[j] = i;
+    ++counts_.by_kind[int(EventKind::Pair)];
+    if (by_tc) ++counts_.tc_elastic;
+    if (!sinks_.empty()) emit({now_, EventKind::Pair, by_tc, i, j, a.vx, a.vy, b.vx, b.vy});
+    predict(i);
+    predict(j);
+  }
+
+  void resolve_wall(std::int32_t i, std::int32_t wall) {
+    advance(i);
+    Disk<T>& d = p_.disk[i];
+    const bool vertical = wall == kWallLeft || wall == kWallRight;
+    const bool by_tc = tc_elastic(i, -1);
+    double ke_before = 0;
+    if constexpr (kInelastic) ke_before = disk_energy(i);
+    if constexpr (kInelastic) {
+      if (by_tc)
+        collide_wall_elastic(vertical, d.vx, d.vy);
+      else
+        collide_wall(vertical, xi_wall_, d.vx, d.vy);
+      ke_ += disk_energy(i) - ke_before;
+    } else {
+      collide_wall_elastic(vertical, d.vx, d.vy);
+    }
+    if constexpr (kTc) p_.last_collision[i] = now_;
+    ++p_.counter[i];
+    p_.last_partner[i] = -1;
+    ++counts_.by_kind[int(EventKind::Wall)];
+    if (by_tc) ++counts_.tc_elastic;
+    if (!sinks_.empty()) emit({now_, EventKind::Wall, by_tc, i, wall, d.vx, d.vy, T(0), T(0)});
+    predict(i);
+  }
+
+  // Moves disk i into the neighbouring cell; at a periodic edge its stored position wraps by one box
+  // length (a state change, so it is an event sinks see). Then only the three cells that became
+  // neighbours are searched: predictions against the others are still valid.
+  void cross_cell(std::int32_t i, CrossDir dir, EventKind kind) {
+    const std::int32_t cell = grid_.cell_of(i);
+    std::int32_t cx = grid_.cell_x(cell), cy = grid_.cell_y(cell);
+    const std::int32_t step_x = dir == kCrossRight ? 1 : dir == kCrossLeft ? -1 : 0;
+    const std::int32_t step_y = dir == kCrossUp ? 1 : dir == kCrossDown ? -1 : 0;
+    cx += step_x;
+    cy += step_y;
+    if constexpr (kPeriodic) {
+      if (kind == EventKind::Wrap) wrap(i, dir);
+      cx = (cx + grid_.nx()) % grid_.nx();
+      cy = (cy + grid_.ny()) % grid_.ny();
+    }
+    grid_.move(i, grid_.cell_at(cx, cy));
+    ++counts_.by_kind[int(kind)];
+
+    Prediction& pr = pred_[i];
+    Candidate<T> best{pr.t_coll, pr.coll_kind, pr.partner};
+    const Position2<T> pi = position_at(p_.disk[i], now_);
+    for (std::int32_t k = -1; k <= 1; ++k) {
+      if (step_x != 0) scan_cell(i, pi, cx + step_x, cy + k, best);
+      else scan_cell(i, pi, cx + k, cy + step_y, best);
+    }
+    if (best.time != pr.t_coll || best.kind != pr.coll_kind || best.partner != pr.partner) {
+      pr.t_coll = best.time;
+      pr.coll_kind = best.kind;
+      pr.partner = best.partner;
+      pr.partner_counter = counter_of(best);
+    }
+    const Crossing<T> cross = predict_crossing(p_.disk[i], grid_, grid_.cell_of(i), kPeriodic, now_);
+    pr.t_cross = cross.time;
+    pr.cross_dir = cross.dir;
+    push(i);
+  }
+
+  void wrap(std::int32_t i, CrossDir dir) {
+    advance(i);
+    Disk<T>& d = p_.disk[i];
+    switch (dir) {
+      case kCrossRight: d.x = d.x - lx_; break;
+      case kCrossLeft: d.x = d.x + lx_; break;
+      case kCrossUp: d.y = d.y - ly_; break;
+      case kCrossDown: d.y = d.y + ly_; break;
+    }
+    if (!sinks_.empty()) {
+      static constexpr std::int32_t kWrapOf[] = {kWrapRight, kWrapLeft, kWrapTop, kWrapBottom};
+      emit({now_, EventKind::Wrap, false, i, kWrapOf[dir], d.vx, d.vy, T(0), T(0)});
+    }
+  }
+
+  void sample(T t) {
+    now_ = t;
+    ++next_sample_index_;
+    ++counts_.by_kind[int(EventKind::Sample)];
+    for (Sink<T>* s : sinks_) s->on_sample(t, p_);
+  }
+
+  // The time-reversal action: every disk is brought to now and its velocity negated (exact in floating
+  // point), then every prediction is rebuilt.
+  void reverse_velocities(T t) {
+    now_ = t;
+    ++next_action_index_;
+    for (std::size_t i = 0; i < p_.size(); ++i) {
+      advance(std::int32_t(i));
+      p_.disk[i].vx = -p_.disk[i].vx;
+      p_.disk[i].vy = -p_.disk[i].vy;
+      ++p_.counter[i];
+      p_.last_partner[i] = -1;
+    }
+    ++counts_.by_kind[int(EventKind::Action)];
+    if (!sinks_.empty()) emit({now_, EventKind::Action, false, -1, -1, T(0), T(0), T(0), T(0)});
+    rebuild();
+  }
+
+  void emit(const EventOutcome<T>& outcome) {
+    for (Sink<T>* s : sinks_) s->on_event(outcome, p_);
+  }
+
+  // --- bookkeeping --------------------------------------------------------------------------------
+  T next_sample_time() const {
+    if (!opt_.sample_interval) return kNever<T>;
+    return T(double(next_sample_index_ + 1) * *opt_.sample_interval);
+  }
+  T next_action_time() const {
+    return next_action_index_ < opt_.actions.size() ? T(opt_.actions[next_action_index_].time) : kNever<T>;
+  }
+
+  // Inelastic collapse shows as ever more events at one and the same time; past the limit we stop.
+  void note_time(T t) {
+    if (t == now_) {
+      if (++same_time_events_ > stall_limit_) stalled_ = true;
+    } else {
+      same_time_events_ = 0;
+    }
+  }
+
+  RunStatus check_stops() {
+    if (stalled_) {
+      std::ostringstream m;
+      m << "the simulation stalled at t = " << double(now_) << ": " << same_time_events_
+        << " consecutive events without time advancing (inelastic collapse). ";
+      if constexpr (kTc)
+        m << "Increase physics.tc (now " << opt_.physics.tc << ").";
+      else
+        m << "Enable the TC model (physics.tc > 0, e.g. 1e-3 of the mean free time) or raise the restitution.";
+      stall_message_ = m.str();
+      return RunStatus::Stalled;
+    }
+    if (opt_.stop.events && counts_.events() >= *opt_.stop.events) return RunStatus::ReachedEvents;
+    if (opt_.stop.collisions_per_particle && counts_.of(EventKind::Pair) >= pairs_to_stop_)
+      return RunStatus::ReachedCollisions;
+    if constexpr (kInelastic)
+      if (opt_.stop.energy_fraction && ke_ <= *opt_.stop.energy_fraction * ke0_) return RunStatus::ReachedEnergy;
+    return RunStatus::Running;
+  }
+
+  RunStatus finish(RunStatus s) {
+    status_ = s;
+    for (Sink<T>* sink : sinks_) sink->on_finish(now_, p_);
+    return s;
+  }
+
+  double disk_energy(std::int32_t i) const {
+    const double vx = double(p_.disk[i].vx), vy = double(p_.disk[i].vy);
+    return 0.5 * double(p_.mass[i]) * (vx * vx + vy * vy);
+  }
+  double pair_energy(std::int32_t i, std::int32_t j) const { return disk_energy(i) + disk_energy(j); }
+
+  EngineOptions opt_;
+  Particles<T> p_;
+  std::vector<Prediction> pred_;
+  CellGrid<T> grid_;
+  EventQueue<T> queue_;
+  std::vector<Sink<T>*> sinks_;
+  EventCounts counts_;
+
+  T lx_ = 1, ly_ = 1, half_lx_ = 0.5, half_ly_ = 0.5;
+  T one_plus_xi_ = 2, xi_wall_ = 1, tc_ = 0;
+  T b_noise2_ = 0;  // round-off floor of b, geometry.hpp
+  T now_ = 0;
+  T stop_time_ = kNever<T>;
+  double ke0_ = 0, ke_ = 0;
+  std::uint64_t pairs_to_stop_ = 0;
+  std::uint64_t next_sample_index_ = 0;
+  std::size_t next_action_index_ = 0;
+  std::uint64_t same_time_events_ = 0, stall_limit_ = 0;
+  bool stalled_ = false;
+  bool started_ = false;
+  RunStatus status_ = RunStatus::Running;
+  std::string stall_message_;
+};
+
+}  // namespace ede

@@ -1,0 +1,35 @@
+// Choosing the cell grid for a box: see grid_shape_for in engine_core.hpp.
+#include <algorithm>
+#include <cmath>
+
+#include "engine_core.hpp"
+
+namespace ede {
+
+namespace {
+// Cells must be wider than a largest diameter by a relative margin far above round-off in any scalar
+// type we offer (float: 6e-8), so a disk a hair outside its tracked cell never hides a contact.
+constexpr double kCellMargin = 1e-6;
+}  // namespace
+
+GridShape grid_shape_for(double lx, double ly, double max_radius, std::size_t disks, bool periodic,
+                         Algorithm algorithm) {
+  const std::int32_t min_cells = periodic ? 3 : 1;
+  if (algorithm == Algorithm::AllPairs) return {min_cells, min_cells};  // every disk neighbours every other
+  const double width = 2 * max_radius * (1 + kCellMargin);
+  double nx = std::max(1.0, std::floor(lx / width));
+  double ny = std::max(1.0, std::floor(ly / width));
+  // Dilute scenes: at most ~4 cells per disk; finer cells only add crossing events.
+  const double max_cells = 4.0 * double(std::max<std::size_t>(disks, 1)) + 16;
+  if (nx * ny > max_cells) {
+    const double scale = std::sqrt(nx * ny / max_cells);
+    nx = std::max(1.0, std::floor(nx / scale));
+    ny = std::max(1.0, std::floor(ny / scale));
+  }
+  // Keep the count well inside int32 even for absurd boxes (the grid is then coarser than it could be).
+  nx = std::min(nx, 65536.0);
+  ny = std::min(ny, 65536.0);
+  return {std::max(min_cells, std::int32_t(nx)), std::max(min_cells, std::int32_t(ny))};
+}
+
+}  // namespace ede
