@@ -15,8 +15,9 @@ std::set<int> members(const CellGrid<double>& g, int cell) {
 }  // namespace
 
 TEST_CASE("CellGrid: insert, move and remove keep every list consistent", "[cells]") {
+  std::vector<Disk<double>> disks(6);
   CellGrid<double> g;
-  g.reset(4, 3, 1.0, 0.75, 6);
+  g.reset(4, 3, 1.0, 0.75, disks);
   for (int i = 0; i < 6; ++i) g.insert(i, i % 2);
   CHECK(members(g, 0) == std::set<int>{0, 2, 4});
   CHECK(members(g, 1) == std::set<int>{1, 3, 5});
@@ -32,8 +33,9 @@ TEST_CASE("CellGrid: insert, move and remove keep every list consistent", "[cell
 }
 
 TEST_CASE("CellGrid: positions map to cells, clamped at the edges", "[cells]") {
+  std::vector<Disk<double>> disks(1);
   CellGrid<double> g;
-  g.reset(4, 2, 1.0, 1.0, 1);
+  g.reset(4, 2, 1.0, 1.0, disks);
   CHECK(g.cell_containing(0.1, 0.1) == 0);
   CHECK(g.cell_containing(0.3, 0.1) == 1);
   CHECK(g.cell_containing(0.99, 0.99) == g.cell_at(3, 1));

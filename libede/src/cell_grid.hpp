@@ -6,7 +6,10 @@
 // whose time comes from the same boundaries as here (boundary_x/_y), so round-off can leave a disk a hair
 // outside its cell but never lets a pair be missed (cells are wider than a diameter by a relative margin
 // far above round-off).
-// Storage: intrusive doubly linked lists (head per cell, next/prev per disk): O(1) moves, 8 bytes per disk.
+// Storage: intrusive doubly linked lists: O(1) moves. The forward link and the cell index live in the
+// disk's own record (Disk::next_in_cell, Disk::cell), so walking a cell's list reads each neighbour's
+// record once, the line the prediction needs anyway; the grid holds the heads and the backward links
+// (only removals read them).
 // Rejected: fixed-capacity cell arrays (a polydisperse or clustered scene overflows them) and neighbour
 // lists (Verlet lists need a skin and rebuilds, and their size grows with density).
 #pragma once
@@ -16,6 +19,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "ede/particles.hpp"
+
 namespace ede {
 
 template <class T>
@@ -23,18 +28,19 @@ class CellGrid {
  public:
   static constexpr std::int32_t kNone = -1;
 
-  // nx * ny cells over [0, lx] x [0, ly].
-  void reset(std::int32_t nx, std::int32_t ny, T lx, T ly, std::size_t disks) {
+  // nx * ny cells over [0, lx] x [0, ly], for the disks in `disks` (which must outlive the grid and not
+  // be resized); every disk starts outside any cell.
+  void reset(std::int32_t nx, std::int32_t ny, T lx, T ly, std::vector<Disk<T>>& disks) {
     nx_ = nx;
     ny_ = ny;
     lx_ = lx;
     ly_ = ly;
     wx_ = lx / T(nx);
     wy_ = ly / T(ny);
+    disks_ = disks.data();
     head_.assign(std::size_t(nx) * std::size_t(ny), kNone);
-    next_.assign(disks, kNone);
-    prev_.assign(disks, kNone);
-    cell_.assign(disks, kNone);
+    prev_.assign(disks.size(), kNone);
+    for (Disk<T>& d : disks) d.next_in_cell = d.cell = kNone;
   }
 
   std::int32_t nx() const { return nx_; }
@@ -42,9 +48,9 @@ class CellGrid {
   std::int32_t cell_x(std::int32_t cell) const { return cell % nx_; }
   std::int32_t cell_y(std::int32_t cell) const { return cell / nx_; }
   std::int32_t cell_at(std::int32_t cx, std::int32_t cy) const { return cy * nx_ + cx; }
-  std::int32_t cell_of(std::int32_t disk) const { return cell_[disk]; }
+  std::int32_t cell_of(std::int32_t disk) const { return disks_[disk].cell; }
   std::int32_t head(std::int32_t cell) const { return head_[cell]; }
-  std::int32_t next(std::int32_t disk) const { return next_[disk]; }
+  std::int32_t next(std::int32_t disk) const { return disks_[disk].next_in_cell; }
 
   // The cell containing a position (clamped into the grid: round-off may put a disk a hair outside).
   std::int32_t cell_containing(T x, T y) const {
@@ -56,21 +62,22 @@ class CellGrid {
   T boundary_y(std::int32_t c) const { return c == ny_ ? ly_ : T(c) * wy_; }
 
   void insert(std::int32_t disk, std::int32_t cell) {
-    cell_[disk] = cell;
+    Disk<T>& d = disks_[disk];
+    d.cell = cell;
     prev_[disk] = kNone;
-    next_[disk] = head_[cell];
+    d.next_in_cell = head_[cell];
     if (head_[cell] != kNone) prev_[head_[cell]] = disk;
     head_[cell] = disk;
   }
 
   void remove(std::int32_t disk) {
-    const std::int32_t c = cell_[disk];
+    Disk<T>& d = disks_[disk];
     if (prev_[disk] != kNone)
-      next_[prev_[disk]] = next_[disk];
+      disks_[prev_[disk]].next_in_cell = d.next_in_cell;
     else
-      head_[c] = next_[disk];
-    if (next_[disk] != kNone) prev_[next_[disk]] = prev_[disk];
-    cell_[disk] = kNone;
+      head_[d.cell] = d.next_in_cell;
+    if (d.next_in_cell != kNone) prev_[d.next_in_cell] = prev_[disk];
+    d.cell = d.next_in_cell = kNone;
   }
 
   void move(std::int32_t disk, std::int32_t cell) {
@@ -78,9 +85,7 @@ class CellGrid {
     insert(disk, cell);
   }
 
-  std::size_t memory_bytes() const {
-    return (head_.capacity() + next_.capacity() + prev_.capacity() + cell_.capacity()) * sizeof(std::int32_t);
-  }
+  std::size_t memory_bytes() const { return (head_.capacity() + prev_.capacity()) * sizeof(std::int32_t); }
 
  private:
   static std::int32_t index_of(T x, T width, std::int32_t n) {
@@ -92,7 +97,8 @@ class CellGrid {
 
   std::int32_t nx_ = 1, ny_ = 1;
   T lx_ = 1, ly_ = 1, wx_ = 1, wy_ = 1;
-  std::vector<std::int32_t> head_, next_, prev_, cell_;
+  Disk<T>* disks_ = nullptr;
+  std::vector<std::int32_t> head_, prev_;
 };
 
 }  // namespace ede

@@ -68,7 +68,7 @@ class Engine final : public EngineApi<T> {
     xi_wall_ = T(options.physics.wall_restitution);
     tc_ = T(options.physics.tc);
     b_noise2_ = b_noise2_for(std::max(lx_, ly_));
-    grid_.reset(shape.nx, shape.ny, lx_, ly_, p_.size());
+    grid_.reset(shape.nx, shape.ny, lx_, ly_, p_.disk);
     queue_.reset(static_cast<std::uint32_t>(p_.size()));
     pred_.assign(p_.size(), Prediction{kNever<T>, kNever<T>, -1, 0, EventKind::Pair, kCrossRight});
     stall_limit_ = options.stall_limit ? options.stall_limit
@@ -99,8 +99,7 @@ class Engine final : public EngineApi<T> {
 
   std::size_t memory_bytes() const override {
     return p_.disk.capacity() * sizeof(Disk<T>) + p_.mass.capacity() * sizeof(T) +
-           p_.species.capacity() * sizeof(std::int32_t) + p_.counter.capacity() * sizeof(std::uint32_t) +
-           p_.last_collision.capacity() * sizeof(T) + p_.last_partner.capacity() * sizeof(std::int32_t) +
+           p_.species.capacity() * sizeof(std::int32_t) + p_.last_collision.capacity() * sizeof(T) +
            pred_.capacity() * sizeof(Prediction) + grid_.memory_bytes() + queue_.memory_bytes();
   }
 
@@ -161,11 +160,10 @@ class Engine final : public EngineApi<T> {
     p_.disk.resize(n);
     p_.mass.resize(n);
     p_.species = init.species;
-    p_.counter.assign(n, 0);
-    p_.last_partner.assign(n, -1);
     if constexpr (kTc) p_.last_collision.assign(n, -std::numeric_limits<T>::infinity());
     for (std::size_t i = 0; i < n; ++i) {
-      p_.disk[i] = Disk<T>{T(init.x[i]), T(init.y[i]), T(init.vx[i]), T(init.vy[i]), T(0), T(init.radius[i])};
+      p_.disk[i] = Disk<T>{T(init.x[i]), T(init.y[i]), T(init.vx[i]), T(init.vy[i]), T(0), T(init.radius[i]),
+                           -1, 0, -1, -1};
       p_.mass[i] = T(init.mass[i]);
     }
     ke0_ = kinetic_energy(p_);
@@ -182,7 +180,7 @@ class Engine final : public EngineApi<T> {
   // Rebuilds cells and every prediction from the state alone (positions at now_, last partners): the same
   // state always gives the same queue, which is what makes a resumed run identical to an uninterrupted one.
   void rebuild() {
-    grid_.reset(grid_.nx(), grid_.ny(), lx_, ly_, p_.size());
+    grid_.reset(grid_.nx(), grid_.ny(), lx_, ly_, p_.disk);
     for (std::size_t i = 0; i < p_.size(); ++i) {
       const Position2<T> pos = position_at(p_.disk[i], now_);
       grid_.insert(std::int32_t(i), grid_.cell_containing(pos.x, pos.y));
@@ -225,7 +223,7 @@ class Engine final : public EngineApi<T> {
   // meet again through the image they collided in: straight lines cross a circle once on the way in.
   // Skipping it keeps round-off from turning their separation into a spurious second collision at once.
   bool just_collided(std::int32_t i, std::int32_t k, T dx, T dy) const {
-    if (p_.last_partner[i] != k || p_.last_partner[k] != i) return false;
+    if (p_.disk[i].last_partner != k || p_.disk[k].last_partner != i) return false;
     if constexpr (kPeriodic) return std::abs(dx) <= half_lx_ && std::abs(dy) <= half_ly_;
     return true;
   }
@@ -233,7 +231,7 @@ class Engine final : public EngineApi<T> {
   // Best pair candidate of disk i against the disks of cell (cx, cy).
   void scan_cell(std::int32_t i, Position2<T> pi, std::int32_t cx, std::int32_t cy, Candidate<T>& best) const {
     const Disk<T>& di = p_.disk[i];
-    const std::int32_t lp = p_.last_partner[i];
+    const std::int32_t lp = di.last_partner;
     visit_cell(i, cx, cy, [&](std::int32_t k, T sx, T sy) {
       const Disk<T>& dk = p_.disk[k];
       if (k == lp) {
@@ -269,7 +267,7 @@ class Engine final : public EngineApi<T> {
   }
 
   std::uint32_t counter_of(const Candidate<T>& c) const {
-    return c.kind == EventKind::Pair && c.partner >= 0 ? p_.counter[c.partner] : 0;
+    return c.kind == EventKind::Pair && c.partner >= 0 ? p_.disk[c.partner].counter : 0;
   }
 
   void push(std::int32_t i) {
@@ -301,7 +299,7 @@ class Engine final : public EngineApi<T> {
     const std::int32_t i = std::int32_t(tag_disk(key.tag));
     const EventKind kind = tag_kind(key.tag);
     const Prediction& pr = pred_[i];
-    if (kind == EventKind::Pair && p_.counter[pr.partner] != pr.partner_counter) {
+    if (kind == EventKind::Pair && p_.disk[pr.partner].counter != pr.partner_counter) {
       ++counts_.stale;
       now_ = key.time;
       predict(i);
@@ -355,10 +353,10 @@ class Engine final : public EngineApi<T> {
     collide_pair(dx, dy, p_.mass[i], p_.mass[j], one_plus_xi, a.vx, a.vy, b.vx, b.vy);
     if constexpr (kInelastic) ke_ += pair_energy(i, j) - ke_before;
     if constexpr (kTc) p_.last_collision[i] = p_.last_collision[j] = now_;
-    ++p_.counter[i];
-    ++p_.counter[j];
-    p_.last_partner[i] = j;
-    p_.last_partner[j] = i;
+    ++a.counter;
+    ++b.counter;
+    a.last_partner = j;
+    b.last_partner = i;
     ++counts_.by_kind[int(EventKind::Pair)];
     if (by_tc) ++counts_.tc_elastic;
     if (!sinks_.empty()) emit({now_, EventKind::Pair, by_tc, i, j, a.vx, a.vy, b.vx, b.vy});
@@ -383,8 +381,8 @@ class Engine final : public EngineApi<T> {
       collide_wall_elastic(vertical, d.vx, d.vy);
     }
     if constexpr (kTc) p_.last_collision[i] = now_;
-    ++p_.counter[i];
-    p_.last_partner[i] = -1;
+    ++d.counter;
+    d.last_partner = -1;
     ++counts_.by_kind[int(EventKind::Wall)];
     if (by_tc) ++counts_.tc_elastic;
     if (!sinks_.empty()) emit({now_, EventKind::Wall, by_tc, i, wall, d.vx, d.vy, T(0), T(0)});
@@ -459,8 +457,8 @@ class Engine final : public EngineApi<T> {
       advance(std::int32_t(i));
       p_.disk[i].vx = -p_.disk[i].vx;
       p_.disk[i].vy = -p_.disk[i].vy;
-      ++p_.counter[i];
-      p_.last_partner[i] = -1;
+      ++p_.disk[i].counter;
+      p_.disk[i].last_partner = -1;
     }
     ++counts_.by_kind[int(EventKind::Action)];
     if (!sinks_.empty()) emit({now_, EventKind::Action, false, -1, -1, T(0), T(0), T(0), T(0)});
