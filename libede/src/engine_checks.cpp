@@ -1,9 +1,11 @@
-// What the engine itself requires of its input, beyond what setup already checked for a scene: sizes the
-// queue can index, finite numbers, and a periodic box at least three cells wide.
+// What the engine requires of its input: sizes the queue can index, finite numbers, the disks inside the
+// box and apart (check_initial_state: setup checked a scene's state already, but a state built in code
+// reaches the engine directly), and a periodic box at least three cells wide.
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
+#include "ede/setup.hpp"
 #include "engine_factory.hpp"
 
 namespace ede {
@@ -37,6 +39,7 @@ Status check_engine_input(const InitialState& init, const EngineOptions& options
     return Error{"restitution coefficients must lie in [0, 1]"};
   if (!(ph.tc >= 0) || !finite(ph.tc)) return Error{"tc must be finite and >= 0"};
   const bool periodic = options.boundary == BoundaryKind::Periodic;
+  if (Status s = check_initial_state(init, options.boundary, "the initial state"); !s) return s;
   if (periodic && (init.lx < 3 * 2 * max_radius * (1 + 1e-6) || init.ly < 3 * 2 * max_radius * (1 + 1e-6))) {
     std::ostringstream m;
     m << "a periodic box must be at least three largest diameters wide on each side (largest diameter "

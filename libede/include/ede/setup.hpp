@@ -5,6 +5,9 @@
 // velocities (zero, one speed in random directions, a vector, Maxwell-Boltzmann, or a list). All randomness
 // comes from ede::Rng seeded by the scene's seed, one stream per species, so adding a species does not
 // change the disks of the ones before it. Every disk is checked against every other (overlap) and the box.
+// Disk ids: contiguous per species, species in scene order. Within a random or lattice species the disks
+// are ordered along a Hilbert curve over the box (ties by placement order), so disks near in space are
+// near in memory; explicit species keep the order of their position list.
 #pragma once
 
 #include "ede/initial_state.hpp"
