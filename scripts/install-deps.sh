@@ -1,0 +1,22 @@
+#!/bin/sh
+# Installs what ede needs from Debian 12's packages, skipping apt entirely when everything is present.
+# Run as root (or with sudo). Used by the README's two commands and by CI.
+set -eu
+
+PACKAGES="build-essential cmake libeigen3-dev capnproto libcapnp-dev libzstd-dev libcli11-dev catch2 \
+libtomlplusplus-dev"
+
+missing=""
+for p in $PACKAGES; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
+done
+
+if [ -n "$missing" ]; then
+  echo "install-deps: installing:$missing"
+  SUDO=""
+  [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends $missing
+else
+  echo "install-deps: all packages present"
+fi

@@ -1,0 +1,7 @@
+#!/bin/sh
+# The README's test command: install what is missing, build, run the whole test suite.
+set -eu
+cd "$(dirname "$0")/.."
+scripts/install-deps.sh
+scripts/build.sh
+ctest --test-dir build --output-on-failure -j "$(nproc)"

@@ -1,0 +1,124 @@
+// ede-sim as a user runs it: summaries, JSON keys, exact CSV, overrides, and clear errors on bad input.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <vector>
+
+#include "tool_runner.hpp"
+
+using namespace ede::test;
+
+namespace {
+// The number after "key": in a flat JSON object (our summary's keys are unique identifiers).
+double json_number(const std::string& json, const std::string& key) {
+  const auto at = json.find("\"" + key + "\": ");
+  REQUIRE(at != std::string::npos);
+  return std::strtod(json.c_str() + at + key.size() + 4, nullptr);
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+}  // namespace
+
+TEST_CASE("ede-sim runs the default scene and reports the required JSON keys", "[tool][ede-sim]") {
+  const ToolRun r = run_tool("ede-sim", source_path("examples/gas.toml") + " --json --quiet", "json");
+  REQUIRE(r.status == 0);
+  for (const char* key : {"events", "events_per_second", "sim_time", "wall_seconds", "energy_initial",
+                          "energy_final", "collisions_per_particle", "peak_rss_bytes", "effects"})
+    CHECK(r.out.find(std::string("\"") + key + "\": ") != std::string::npos);
+  CHECK(json_number(r.out, "collisions_per_particle") == Approx(50).margin(1e-9));
+  const double e0 = json_number(r.out, "energy_initial"), e1 = json_number(r.out, "energy_final");
+  CHECK(std::abs(e1 - e0) / e0 < 1e-12);  // elastic: energy conserved to round-off
+  CHECK(r.out.find("\"effects\": \"walls, elastic") != std::string::npos);
+}
+
+TEST_CASE("ede-sim prints a readable summary", "[tool][ede-sim]") {
+  const ToolRun r = run_tool("ede-sim", source_path("examples/gas.toml") + " --quiet", "text");
+  REQUIRE(r.status == 0);
+  for (const char* label : {"events", "collisions/disk", "simulated time", "wall time", "M events/s",
+                            "kinetic energy", "momentum", "peak RSS", "effects"})
+    CHECK(r.out.find(label) != std::string::npos);
+}
+
+TEST_CASE("ede-sim --final-state writes numbers that read back identically", "[tool][ede-sim]") {
+  const std::string csv = std::string(EDE_BINARY_DIR) + "/tests/final-state.csv";
+  const ToolRun r = run_tool("ede-sim",
+                             source_path("examples/scenes/mixture.toml") + " --quiet --set stop.time=0.05 --final-state " + csv,
+                             "csv");
+  REQUIRE(r.status == 0);
+  const auto rows = lines(read_file(csv));
+  REQUIRE(rows.size() > 1);
+  CHECK(rows[0] == "id,species,x,y,vx,vy,radius,mass");
+  // Each number printed with %.17g parses to a double that prints back to the same text.
+  for (std::size_t k = 1; k < rows.size(); k += 37) {
+    std::istringstream fields(rows[k]);
+    std::string field;
+    for (int col = 0; std::getline(fields, field, ','); ++col) {
+      if (col < 2) continue;
+      char again[40];
+      std::snprintf(again, sizeof again, "%.17g", std::strtod(field.c_str(), nullptr));
+      REQUIRE(field == again);
+    }
+  }
+}
+
+TEST_CASE("ede-sim --set overrides scene values (parameter scans)", "[tool][ede-sim]") {
+  const ToolRun r = run_tool("ede-sim",
+                             source_path("examples/gas.toml") +
+                                 " --json --quiet --set species.gas.count=300 --set box.boundary=periodic",
+                             "set");
+  REQUIRE(r.status == 0);
+  CHECK(json_number(r.out, "disks") == 300);
+  CHECK(r.out.find("\"effects\": \"periodic") != std::string::npos);
+}
+
+TEST_CASE("ede-sim runs float and long double scenes", "[tool][ede-sim]") {
+  for (const char* scalar : {"float", "\"long double\""}) {
+    const ToolRun r = run_tool("ede-sim",
+                               source_path("examples/gas.toml") + " --json --quiet --set 'engine.scalar=" + scalar + "'",
+                               "scalar");
+    INFO(scalar << ": " << r.err);
+    REQUIRE(r.status == 0);
+    CHECK(json_number(r.out, "collisions_per_particle") == Approx(50).margin(1e-6));
+  }
+}
+
+TEST_CASE("ede-sim rejects bad input with a clear message and a non-zero exit", "[tool][ede-sim]") {
+  const std::string dir = std::string(EDE_BINARY_DIR) + "/tests/";
+  SECTION("missing file") {
+    const ToolRun r = run_tool("ede-sim", dir + "no-such-scene.toml", "missing");
+    CHECK(r.status == 1);
+    CHECK(r.err.find("no-such-scene.toml") != std::string::npos);
+  }
+  SECTION("typo in a key names file, line and the fix") {
+    std::ofstream(dir + "typo.toml") << "[box]\nsize = [1.0, 1.0]\n[[species]]\nname = \"a\"\ncount = 3\nradus = 0.01\n"
+                                        "[stop]\ntime = 1\n";
+    const ToolRun r = run_tool("ede-sim", dir + "typo.toml", "typo");
+    CHECK(r.status == 1);
+    CHECK(r.err.find("typo.toml:6") != std::string::npos);
+    CHECK(r.err.find("radius") != std::string::npos);
+  }
+  SECTION("overlapping explicit disks name both disks") {
+    std::ofstream(dir + "overlap.toml")
+        << "[[species]]\nname = \"a\"\nradius = 0.1\n[species.placement]\nkind = \"explicit\"\n"
+           "positions = [[0.5, 0.5], [0.6, 0.5]]\n[stop]\ntime = 1\n";
+    const ToolRun r = run_tool("ede-sim", dir + "overlap.toml", "overlap");
+    CHECK(r.status == 1);
+    CHECK(r.err.find("overlap") != std::string::npos);
+    CHECK(r.err.find("overlap.toml") != std::string::npos);
+  }
+  SECTION("a bad override") {
+    const ToolRun r = run_tool("ede-sim", source_path("examples/gas.toml") + " --set physics.restitution=2", "badset");
+    CHECK(r.status == 1);
+    CHECK(r.err.find("--set") != std::string::npos);
+  }
+  SECTION("a bad command line") {
+    const ToolRun r = run_tool("ede-sim", "--no-such-flag", "badflag");
+    CHECK(r.status != 0);
+  }
+}
