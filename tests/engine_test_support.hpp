@@ -62,6 +62,24 @@ std::unique_ptr<EngineApi<T>> engine(const InitialState& s, const EngineOptions&
   return std::move(made).value();
 }
 
+// An engine run to its end with a Recorder attached (the recorder lives on the heap: the engine keeps a
+// pointer to it).
+struct RecordedRun {
+  std::unique_ptr<EngineApi<double>> engine;
+  std::unique_ptr<Recorder<double>> recorder = std::make_unique<Recorder<double>>();
+  RunStatus status = RunStatus::Running;
+  const std::vector<EventOutcome<double>>& events() const { return recorder->events; }
+  std::vector<EventOutcome<double>> pairs() const { return recorder->of_kind(EventKind::Pair); }
+};
+
+inline RecordedRun run_recorded(const InitialState& s, const EngineOptions& o) {
+  RecordedRun r;
+  r.engine = engine(s, o);
+  r.engine->add_sink(r.recorder.get());
+  r.status = r.engine->run();
+  return r;
+}
+
 // A disk's position at the engine's current time.
 template <class T>
 double x_now(const EngineApi<T>& e, std::size_t i) { return double(e.particles().x_at(i, e.time())); }

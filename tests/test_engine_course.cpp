@@ -10,10 +10,10 @@ using namespace ede::test;
 TEST_CASE("course: a disk hits a wall head-on and comes straight back", "[course][wall]") {
   InitialState s = box();
   s.add(0.5, 0.5, 1.0, 0.0, 0.1, 1.0, 0);
-  auto e = engine(s, walls_until(0.5));
-  Recorder<double> rec;
-  e->add_sink(&rec);
-  REQUIRE(e->run() == RunStatus::ReachedTime);
+  const RecordedRun run = run_recorded(s, walls_until(0.5));
+  const auto& e = run.engine;
+  const auto& rec = *run.recorder;
+  REQUIRE(run.status == RunStatus::ReachedTime);
   REQUIRE(rec.events.size() == 1);
   const auto& hit = rec.events[0];
   CHECK(hit.kind == EventKind::Wall);
@@ -27,10 +27,8 @@ TEST_CASE("course: a disk hits a wall head-on and comes straight back", "[course
 TEST_CASE("course: a disk hitting a wall at an angle obeys the law of reflection", "[course][wall]") {
   InitialState s = box();
   s.add(0.5, 0.5, 1.0, 0.5, 0.1, 1.0, 0);
-  auto e = engine(s, walls_until(0.5));
-  Recorder<double> rec;
-  e->add_sink(&rec);
-  e->run();
+  const RecordedRun run = run_recorded(s, walls_until(0.5));
+  const auto& rec = *run.recorder;
   REQUIRE(rec.events.size() == 1);
   CHECK(rec.events[0].j == kWallRight);
   // Angle of incidence equals angle of reflection: the normal component flips, the tangential one stays.
@@ -43,10 +41,10 @@ TEST_CASE("course: v = [v0, v0] touches each wall once and returns to its start"
   InitialState s = box();
   s.add(0.5, 0.3, v0, v0, r, 1.0, 0);
   // Bouncing between r and 1 - r takes 2 (1 - 2r) / v0 = 1.6 in each direction.
-  auto e = engine(s, walls_until(1.6));
-  Recorder<double> rec;
-  e->add_sink(&rec);
-  REQUIRE(e->run() == RunStatus::ReachedTime);
+  const RecordedRun run = run_recorded(s, walls_until(1.6));
+  const auto& e = run.engine;
+  const auto& rec = *run.recorder;
+  REQUIRE(run.status == RunStatus::ReachedTime);
   REQUIRE(rec.events.size() == 4);
   std::vector<int> walls;
   for (const auto& ev : rec.events) walls.push_back(ev.j);
@@ -79,10 +77,8 @@ TEST_CASE("course: two equal disks head-on bounce straight back", "[course][pair
   InitialState s = box();
   s.add(0.25, 0.5, 1.0, 0.0, 0.125, 1.0, 0);
   s.add(0.75, 0.5, -1.0, 0.0, 0.125, 1.0, 0);
-  auto e = engine(s, walls_until(0.2));
-  Recorder<double> rec;
-  e->add_sink(&rec);
-  e->run();
+  const RecordedRun run = run_recorded(s, walls_until(0.2));
+  const auto& rec = *run.recorder;
   REQUIRE(rec.events.size() == 1);
   const auto& c = rec.events[0];
   CHECK(c.kind == EventKind::Pair);
@@ -98,10 +94,8 @@ TEST_CASE("course: at impact parameter (r1+r2)/sqrt(2) equal disks leave at righ
   InitialState s = box();
   s.add(0.2, 0.5, 1.0, 0.0, r, 1.0, 0);
   s.add(0.6, 0.5 + b, 0.0, 0.0, r, 1.0, 0);
-  auto e = engine(s, walls_until(0.35));
-  Recorder<double> rec;
-  e->add_sink(&rec);
-  e->run();
+  const RecordedRun run = run_recorded(s, walls_until(0.35));
+  const auto& rec = *run.recorder;
   const auto pairs = rec.of_kind(EventKind::Pair);
   REQUIRE(pairs.size() == 1);
   const auto& c = pairs[0];
@@ -167,11 +161,7 @@ TEST_CASE("course: scattering angle of a light disk off a heavy one", "[course][
     InitialState s = box();
     s.add(0.5, 0.5, 0.0, 0.0, R, 1e6, 0);
     s.add(0.2, 0.5 + b, 1.0, 0.0, r, 1.0, 0);
-    auto e = engine(s, walls_until(0.3));
-    Recorder<double> rec;
-    e->add_sink(&rec);
-    e->run();
-    const auto pairs = rec.of_kind(EventKind::Pair);
+    const auto pairs = run_recorded(s, walls_until(0.3)).pairs();
     REQUIRE(pairs.size() == 1);
     const auto& c = pairs[0];
     const double vx = c.i == 1 ? c.vix : c.vjx, vy = c.i == 1 ? c.viy : c.vjy;
