@@ -58,7 +58,8 @@ class Engine final : public EngineApi<T> {
   };
 
  public:
-  Engine(const InitialState& init, const EngineOptions& options, GridShape shape) : opt_(options) {
+  Engine(const InitialState& init, const EngineOptions& options, GridShape shape, const ResumePoint<T>* resume)
+      : opt_(options) {
     load(init);
     lx_ = T(init.lx);
     ly_ = T(init.ly);
@@ -75,6 +76,7 @@ class Engine final : public EngineApi<T> {
                                        : std::max<std::uint64_t>(1000000, 100 * std::uint64_t(p_.size()));
     if (options.stop.collisions_per_particle)
       pairs_to_stop_ = static_cast<std::uint64_t>(std::ceil(*options.stop.collisions_per_particle * double(p_.size()) / 2));
+    if (resume) restore(*resume);
   }
 
   void add_sink(Sink<T>* sink) override { sinks_.push_back(sink); }
@@ -171,15 +173,35 @@ class Engine final : public EngineApi<T> {
     if (opt_.stop.time) stop_time_ = T(*opt_.stop.time);
   }
 
+  // A resumed engine takes the state of a rebuild point; start() then rebuilds exactly as the original
+  // run did there, without telling the sinks again (they saw that point in the original run).
+  void restore(const ResumePoint<T>& r) {
+    for (std::size_t i = 0; i < p_.size(); ++i) {
+      Disk<T>& d = p_.disk[i];
+      const Disk<T>& from = r.disks[i];
+      d.x = from.x, d.y = from.y, d.vx = from.vx, d.vy = from.vy, d.t = from.t;
+      d.last_partner = from.last_partner;
+    }
+    if constexpr (kTc) p_.last_collision = r.last_collision;
+    now_ = r.time;
+    counts_ = r.counts;
+    next_sample_index_ = r.next_sample_index;
+    next_action_index_ = std::size_t(r.next_action_index);
+    same_time_events_ = r.same_time_events;
+    ke0_ = r.initial_energy;
+    resumed_ = true;
+  }
+
   void start() {
     started_ = true;
+    if (resumed_) return rebuild(false);
     for (Sink<T>* s : sinks_) s->on_start(now_, p_);
     rebuild();
   }
 
   // Rebuilds cells and every prediction from the state alone (positions at now_, last partners): the same
   // state always gives the same queue, which is what makes a resumed run identical to an uninterrupted one.
-  void rebuild() {
+  void rebuild(bool notify = true) {
     grid_.reset(grid_.nx(), grid_.ny(), lx_, ly_, p_.disk);
     for (std::size_t i = 0; i < p_.size(); ++i) {
       const Position2<T> pos = position_at(p_.disk[i], now_);
@@ -187,7 +209,9 @@ class Engine final : public EngineApi<T> {
     }
     for (std::size_t i = 0; i < p_.size(); ++i) predict(std::int32_t(i));
     if constexpr (kInelastic) ke_ = kinetic_energy(p_);
-    for (Sink<T>* s : sinks_) s->on_rebuild(now_, p_);
+    if (!notify) return;
+    const RebuildPoint<T> point{now_, p_, counts_, next_sample_index_, next_action_index_, same_time_events_, ke0_};
+    for (Sink<T>* s : sinks_) s->on_rebuild(point);
   }
 
   // --- prediction ---------------------------------------------------------------------------------
@@ -340,6 +364,7 @@ class Engine final : public EngineApi<T> {
     advance(j);
     Disk<T>& a = p_.disk[i];
     Disk<T>& b = p_.disk[j];
+    const T vix0 = a.vx, viy0 = a.vy, vjx0 = b.vx, vjy0 = b.vy;
     T dx = b.x - a.x, dy = b.y - a.y;
     if constexpr (kPeriodic) {
       if (dx > half_lx_) dx -= lx_; else if (dx < -half_lx_) dx += lx_;
@@ -359,7 +384,7 @@ class Engine final : public EngineApi<T> {
     b.last_partner = i;
     ++counts_.by_kind[int(EventKind::Pair)];
     if (by_tc) ++counts_.tc_elastic;
-    if (!sinks_.empty()) emit({now_, EventKind::Pair, by_tc, i, j, a.vx, a.vy, b.vx, b.vy});
+    if (!sinks_.empty()) emit({now_, EventKind::Pair, by_tc, i, j, a.vx, a.vy, b.vx, b.vy, vix0, viy0, vjx0, vjy0});
     predict(i);
     predict(j);
   }
@@ -367,6 +392,7 @@ class Engine final : public EngineApi<T> {
   void resolve_wall(std::int32_t i, std::int32_t wall) {
     advance(i);
     Disk<T>& d = p_.disk[i];
+    const T vx0 = d.vx, vy0 = d.vy;
     const bool vertical = wall == kWallLeft || wall == kWallRight;
     const bool by_tc = tc_elastic(i, -1);
     double ke_before = 0;
@@ -385,7 +411,7 @@ class Engine final : public EngineApi<T> {
     d.last_partner = -1;
     ++counts_.by_kind[int(EventKind::Wall)];
     if (by_tc) ++counts_.tc_elastic;
-    if (!sinks_.empty()) emit({now_, EventKind::Wall, by_tc, i, wall, d.vx, d.vy, T(0), T(0)});
+    if (!sinks_.empty()) emit({now_, EventKind::Wall, by_tc, i, wall, d.vx, d.vy, T(0), T(0), vx0, vy0, T(0), T(0)});
     predict(i);
   }
 
@@ -437,7 +463,7 @@ class Engine final : public EngineApi<T> {
     }
     if (!sinks_.empty()) {
       static constexpr std::int32_t kWrapOf[] = {kWrapRight, kWrapLeft, kWrapTop, kWrapBottom};
-      emit({now_, EventKind::Wrap, false, i, kWrapOf[dir], d.vx, d.vy, T(0), T(0)});
+      emit({now_, EventKind::Wrap, false, i, kWrapOf[dir], d.vx, d.vy, T(0), T(0), d.vx, d.vy, T(0), T(0)});
     }
   }
 
@@ -461,7 +487,7 @@ class Engine final : public EngineApi<T> {
       p_.disk[i].last_partner = -1;
     }
     ++counts_.by_kind[int(EventKind::Action)];
-    if (!sinks_.empty()) emit({now_, EventKind::Action, false, -1, -1, T(0), T(0), T(0), T(0)});
+    if (!sinks_.empty()) emit({now_, EventKind::Action, false, -1, -1, T(0), T(0), T(0), T(0), T(0), T(0), T(0), T(0)});
     rebuild();
   }
 
@@ -539,6 +565,7 @@ class Engine final : public EngineApi<T> {
   std::uint64_t same_time_events_ = 0, stall_limit_ = 0;
   bool stalled_ = false;
   bool started_ = false;
+  bool resumed_ = false;
   RunStatus status_ = RunStatus::Running;
   std::string stall_message_;
 };

@@ -2,5 +2,6 @@
 #include "engine_factory.hpp"
 
 namespace ede {
-template Result<std::unique_ptr<EngineApi<double>>> make_engine<double>(const InitialState&, const EngineOptions&);
+template Result<std::unique_ptr<EngineApi<double>>> make_engine<double>(const InitialState&, const EngineOptions&,
+                                                                  const ResumePoint<double>*);
 }  // namespace ede

@@ -15,21 +15,42 @@ Status check_engine_input(const InitialState& init, const EngineOptions& options
 
 template <class T, class Boundary>
 std::unique_ptr<EngineApi<T>> make_engine_for_boundary(const InitialState& init, const EngineOptions& o,
-                                                       GridShape shape) {
+                                                       GridShape shape, const ResumePoint<T>* resume) {
   const PhysicsSpec& ph = o.physics;
   const bool inelastic = ph.restitution != 1.0 || ph.wall_restitution != 1.0;
-  if (!inelastic) return std::make_unique<Engine<T, Boundary, Elastic>>(init, o, shape);
-  if (ph.tc > 0) return std::make_unique<Engine<T, Boundary, InelasticTc>>(init, o, shape);
-  return std::make_unique<Engine<T, Boundary, Inelastic>>(init, o, shape);
+  if (!inelastic) return std::make_unique<Engine<T, Boundary, Elastic>>(init, o, shape, resume);
+  if (ph.tc > 0) return std::make_unique<Engine<T, Boundary, InelasticTc>>(init, o, shape, resume);
+  return std::make_unique<Engine<T, Boundary, Inelastic>>(init, o, shape, resume);
 }
 
 template <class T>
-Result<std::unique_ptr<EngineApi<T>>> make_engine(const InitialState& init, const EngineOptions& options) {
+Status check_resume_point(const InitialState& init, const EngineOptions& options, const ResumePoint<T>& r) {
+  if (r.disks.size() != init.size())
+    return Error{"the resume point holds " + std::to_string(r.disks.size()) + " disks, the scene " +
+                 std::to_string(init.size())};
+  const bool tc = options.physics.tc > 0 &&
+                  (options.physics.restitution != 1.0 || options.physics.wall_restitution != 1.0);
+  if (tc && r.last_collision.size() != init.size())
+    return Error{"the resume point lacks the TC model's collision times"};
+  for (const Disk<T>& d : r.disks) {
+    const bool finite = std::isfinite(double(d.x)) && std::isfinite(double(d.y)) && std::isfinite(double(d.vx)) &&
+                        std::isfinite(double(d.vy)) && std::isfinite(double(d.t));
+    if (!finite || d.last_partner < -1 || d.last_partner >= std::int32_t(init.size()))
+      return Error{"the resume point holds a non-finite number or an invalid partner id"};
+  }
+  return Ok{};
+}
+
+template <class T>
+Result<std::unique_ptr<EngineApi<T>>> make_engine(const InitialState& init, const EngineOptions& options,
+                                                  const ResumePoint<T>* resume) {
   GridShape shape;
   if (Status s = check_engine_input(init, options, shape); !s) return s.error();
+  if (resume)
+    if (Status s = check_resume_point(init, options, *resume); !s) return s.error();
   if (options.boundary == BoundaryKind::Periodic)
-    return make_engine_for_boundary<T, PeriodicBoundary>(init, options, shape);
-  return make_engine_for_boundary<T, WallsBoundary>(init, options, shape);
+    return make_engine_for_boundary<T, PeriodicBoundary>(init, options, shape, resume);
+  return make_engine_for_boundary<T, WallsBoundary>(init, options, shape, resume);
 }
 
 }  // namespace ede

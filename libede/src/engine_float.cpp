@@ -2,5 +2,6 @@
 #include "engine_factory.hpp"
 
 namespace ede {
-template Result<std::unique_ptr<EngineApi<float>>> make_engine<float>(const InitialState&, const EngineOptions&);
+template Result<std::unique_ptr<EngineApi<float>>> make_engine<float>(const InitialState&, const EngineOptions&,
+                                                                  const ResumePoint<float>*);
 }  // namespace ede

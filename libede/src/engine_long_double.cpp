@@ -2,5 +2,6 @@
 #include "engine_factory.hpp"
 
 namespace ede {
-template Result<std::unique_ptr<EngineApi<long double>>> make_engine<long double>(const InitialState&, const EngineOptions&);
+template Result<std::unique_ptr<EngineApi<long double>>> make_engine<long double>(const InitialState&, const EngineOptions&,
+                                                                  const ResumePoint<long double>*);
 }  // namespace ede

@@ -2,6 +2,8 @@
 #include "ede/engine.hpp"
 #include "ede/event.hpp"
 
+#include <algorithm>
+
 namespace ede {
 
 const char* to_string(EventKind k) {
@@ -31,8 +33,13 @@ const char* to_string(RunStatus s) {
 
 bool is_finished(RunStatus s) { return s != RunStatus::Running; }
 
-EngineOptions engine_options_from(const Scene& scene) {
+std::uint64_t auto_rebuild_interval(std::size_t disks) {
+  return std::max<std::uint64_t>(std::uint64_t(1) << 20, 16 * std::uint64_t(disks));
+}
+
+EngineOptions engine_options_from(const Scene& scene, std::size_t disks) {
   EngineOptions o;
+  o.rebuild_interval = scene.rebuild_interval ? scene.rebuild_interval : auto_rebuild_interval(disks);
   o.boundary = scene.boundary;
   o.physics = scene.physics;
   o.stop = scene.stop;

@@ -16,11 +16,12 @@ namespace ede::scene_detail {
 
 namespace {
 
-constexpr std::string_view kRootKeys[] = {"seed",    "box",  "physics",  "engine",
+constexpr std::string_view kRootKeys[] = {"seed", "box",  "physics",  "engine", "log",
                                           "species", "stop", "sampling", "actions"};
 constexpr std::string_view kBoxKeys[] = {"size", "boundary"};
 constexpr std::string_view kPhysicsKeys[] = {"restitution", "wall_restitution", "tc"};
-constexpr std::string_view kEngineKeys[] = {"scalar"};
+constexpr std::string_view kEngineKeys[] = {"scalar", "rebuild_interval"};
+constexpr std::string_view kLogKeys[] = {"keyframe_interval", "chunk_events", "compression_level"};
 constexpr std::string_view kSpeciesKeys[] = {"name",    "count",     "radius",  "mass",
                                              "density", "placement", "velocity"};
 constexpr std::string_view kRadiusKeys[] = {"min", "max"};
@@ -37,6 +38,7 @@ const Section root{"the top level", kRootKeys};
 const Section box{"[box]", kBoxKeys};
 const Section physics{"[physics]", kPhysicsKeys};
 const Section engine{"[engine]", kEngineKeys};
+const Section log{"[log]", kLogKeys};
 const Section species{"[[species]]", kSpeciesKeys};
 const Section radius{"species.radius = { min, max }", kRadiusKeys};
 const Section placement{"[species.placement]", kPlacementKeys};
@@ -49,7 +51,8 @@ const Section action{"[[actions]]", kActionKeys};
 namespace {
 
 const Section* const kAllSections[] = {&sections::root,      &sections::box,      &sections::physics,
-                                       &sections::engine,    &sections::species,  &sections::radius,
+                                       &sections::engine,    &sections::log,      &sections::species,
+                                       &sections::radius,
                                        &sections::placement, &sections::velocity, &sections::stop,
                                        &sections::sampling,  &sections::action};
 
@@ -177,6 +180,7 @@ namespace {
 const Section* section_for(std::string_view key) {  // the section of the table held under key, if any
   static const std::pair<std::string_view, const Section*> kTables[] = {
       {"box", &sections::box},           {"physics", &sections::physics}, {"engine", &sections::engine},
+      {"log", &sections::log},
       {"species", &sections::species},   {"radius", &sections::radius},   {"placement", &sections::placement},
       {"velocity", &sections::velocity}, {"stop", &sections::stop},       {"sampling", &sections::sampling},
       {"actions", &sections::action}};

@@ -64,14 +64,25 @@ PhysicsSpec read_physics(const Reader& top) {
   return out;
 }
 
-ScalarKind read_scalar(const Reader& top) {
+void read_engine(const Reader& top, Scene& scene) {
   const Reader e = top.section("engine");
   e.check_keys(sections::engine);
   switch (e.choice("scalar", {"float", "double", "long double", "long_double"}).value_or(1)) {
-    case 0: return ScalarKind::Float;
-    case 1: return ScalarKind::Double;
-    default: return ScalarKind::LongDouble;
+    case 0: scene.scalar = ScalarKind::Float; break;
+    case 1: scene.scalar = ScalarKind::Double; break;
+    default: scene.scalar = ScalarKind::LongDouble; break;
   }
+  scene.rebuild_interval = static_cast<std::uint64_t>(e.integer("rebuild_interval", 0).value_or(0));
+}
+
+LogSpec read_log(const Reader& top) {
+  const Reader l = top.section("log");
+  l.check_keys(sections::log);
+  LogSpec out;
+  if (const auto k = l.integer("keyframe_interval", 1)) out.keyframe_interval = static_cast<std::uint64_t>(*k);
+  if (const auto c = l.integer("chunk_events", 16, 1 << 24)) out.chunk_events = static_cast<std::uint32_t>(*c);
+  if (const auto z = l.integer("compression_level", 1, 22)) out.compression_level = static_cast<int>(*z);
+  return out;
 }
 
 bool is_name_char(char c) {
@@ -386,7 +397,8 @@ Scene scene_from_tree(const toml::table& root, const Origin& origin) {
   scene.seed = static_cast<std::uint64_t>(top.integer("seed", 0).value_or(1));
   read_box(top, scene);
   scene.physics = read_physics(top);
-  scene.scalar = read_scalar(top);
+  read_engine(top, scene);
+  scene.log = read_log(top);
   read_all_species(top, scene);
   scene.stop = read_stop(top);
   scene.sample_interval = read_sampling(top);

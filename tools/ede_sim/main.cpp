@@ -42,7 +42,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 template <class T>
 int run(const Options& opt, const ede::Scene& scene, const ede::InitialState& initial, double setup_seconds) {
   const auto setup_start = std::chrono::steady_clock::now();
-  auto made = ede::make_engine<T>(initial, ede::engine_options_from(scene));
+  auto made = ede::make_engine<T>(initial, ede::engine_options_from(scene, initial.size()));
   if (!made) return fail(scene.source_name + ": " + made.error().message);
   ede::EngineApi<T>& engine = *made.value();
   double px0 = 0, py0 = 0;

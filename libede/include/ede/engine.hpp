@@ -46,14 +46,19 @@ struct EngineOptions {
   std::vector<ActionSpec> actions;      // sorted by time
   Algorithm algorithm = Algorithm::Cells;
   // Every this many events the predictions are rebuilt from the state alone, a point a run can be resumed
-  // from bit for bit (0: only at start and after actions).
+  // from bit for bit (0: only at start and after actions). Changes round-off, so it is part of a run's
+  // definition; engine_options_from() takes it from the scene (automatic: auto_rebuild_interval).
   std::uint64_t rebuild_interval = 0;
   // Give up (RunStatus::Stalled) after this many consecutive events at one and the same time
   // (0: max(10^6, 100 N)).
   std::uint64_t stall_limit = 0;
 };
 
-EngineOptions engine_options_from(const Scene& scene);
+// The engine options a scene asks for; `disks` sizes the automatic rebuild interval.
+EngineOptions engine_options_from(const Scene& scene, std::size_t disks);
+// max(2^20, 16 N) events: rebuilding costs ~N predictions, so this keeps it under ~1% of the run, and a
+// killed run loses at most a few seconds of work.
+std::uint64_t auto_rebuild_interval(std::size_t disks);
 
 struct EventCounts {
   std::uint64_t by_kind[kEventKindCount] = {};
@@ -67,6 +72,21 @@ struct EventCounts {
     return of(EventKind::Pair) + of(EventKind::Wall) + of(EventKind::Cell) + of(EventKind::Wrap) +
            of(EventKind::Action);
   }
+};
+
+// Where a resumed run starts: a rebuild point as the log stored it. The disks' positions, velocities and
+// times, their last partners and TC times, and the engine's counters; radius, mass and species come from
+// the scene's initial state.
+template <class T>
+struct ResumePoint {
+  T time{};
+  std::vector<Disk<T>> disks;     // x, y, vx, vy, t and last_partner are used
+  std::vector<T> last_collision;  // TC model only
+  EventCounts counts;
+  std::uint64_t next_sample_index = 0;
+  std::uint64_t next_action_index = 0;
+  std::uint64_t same_time_events = 0;
+  double initial_energy = 0;
 };
 
 template <class T>
@@ -90,8 +110,11 @@ class EngineApi {
   virtual std::string check_invariants(double tolerance) const = 0;
 };
 
+// A new engine for `initial`; with `resume`, the engine continues from that rebuild point instead, and
+// produces exactly the events the original run produced after it.
 template <class T>
-Result<std::unique_ptr<EngineApi<T>>> make_engine(const InitialState& initial, const EngineOptions& options);
+Result<std::unique_ptr<EngineApi<T>>> make_engine(const InitialState& initial, const EngineOptions& options,
+                                                  const ResumePoint<T>* resume = nullptr);
 
 // Sums over a state at time t, accumulated in long double whatever T is.
 template <class T>

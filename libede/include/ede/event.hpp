@@ -35,6 +35,8 @@ struct EventOutcome {
   std::int32_t j = -1;      // Pair: the other disk; Wall: WallId; Wrap: WrapDir; Cell: new cell; else -1
   T vix{}, viy{};           // Pair, Wall: post-event velocity of i
   T vjx{}, vjy{};           // Pair: post-event velocity of j
+  T vix0{}, viy0{};         // Pair, Wall: velocity of i before the event (the log codes against it)
+  T vjx0{}, vjy0{};         // Pair: velocity of j before the event
 };
 
 }  // namespace ede

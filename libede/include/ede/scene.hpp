@@ -85,6 +85,12 @@ struct PhysicsSpec {
   double tc = 0;                // TC model: a collision within tc of a participant's previous one is elastic
 };
 
+struct LogSpec {  // how ede-sim -o writes the event log; never changes the simulation itself
+  std::optional<std::uint64_t> keyframe_interval;  // logged events between keyframes (default: see log_writer.hpp)
+  std::optional<std::uint32_t> chunk_events;       // events per compressed chunk
+  std::optional<int> compression_level;            // zstd level
+};
+
 struct Scene {
   std::string source_name;   // file name (or "<text>") for messages
   std::string source_text;   // the effective scene as TOML, after --set overrides: what was run
@@ -93,6 +99,10 @@ struct Scene {
   BoundaryKind boundary = BoundaryKind::Walls;
   PhysicsSpec physics;
   ScalarKind scalar = ScalarKind::Double;
+  // Engine events between rebuilds of every prediction from the state alone: the points a run can be
+  // resumed from bit for bit. Part of the run's definition (it changes round-off); 0 = automatic.
+  std::uint64_t rebuild_interval = 0;
+  LogSpec log;
   std::vector<SpeciesSpec> species;
   StopSpec stop;
   std::optional<double> sample_interval;  // observers see the exact state at k * interval, k = 1, 2, ...

@@ -5,10 +5,27 @@
 // sink; with no sink registered the engine skips the calls entirely.
 #pragma once
 
+#include <cstdint>
+
 #include "ede/event.hpp"
 #include "ede/particles.hpp"
 
 namespace ede {
+
+struct EventCounts;
+
+// A point where every prediction was rebuilt from the state alone: the state plus the engine's own
+// bookkeeping is all a run needs to continue from here bit for bit (ede-sim --resume).
+template <class T>
+struct RebuildPoint {
+  T time;
+  const Particles<T>& particles;
+  const EventCounts& counts;
+  std::uint64_t next_sample_index;   // samples already taken
+  std::uint64_t next_action_index;   // actions already done
+  std::uint64_t same_time_events;    // the stall detector's count
+  double initial_energy;             // the energy stop condition's reference
+};
 
 template <class T>
 class Sink {
@@ -22,7 +39,7 @@ class Sink {
   virtual void on_sample(T time, const Particles<T>& particles) { (void)time, (void)particles; }
   // After the predictions were rebuilt from the state alone (start, actions, every rebuild interval):
   // the points from which a run can be resumed bit for bit.
-  virtual void on_rebuild(T time, const Particles<T>& particles) { (void)time, (void)particles; }
+  virtual void on_rebuild(const RebuildPoint<T>& point) { (void)point; }
   // Once, when the run stops, with the time the run reached.
   virtual void on_finish(T time, const Particles<T>& particles) { (void)time, (void)particles; }
   virtual bool wants_cell_events() const { return false; }
