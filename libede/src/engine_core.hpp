@@ -23,6 +23,7 @@
 #include "collide.hpp"
 #include "ede/engine.hpp"
 #include "ede/initial_state.hpp"
+#include "ede/state_update.hpp"
 #include "effects.hpp"
 #include "event_queue.hpp"
 #include "predict_crossing.hpp"
@@ -339,12 +340,7 @@ class Engine final : public EngineApi<T> {
     return true;
   }
 
-  void advance(std::int32_t i) {
-    Disk<T>& d = p_.disk[i];
-    d.x = drift(d.x, d.vx, d.t, now_);
-    d.y = drift(d.y, d.vy, d.t, now_);
-    d.t = now_;
-  }
+  void advance(std::int32_t i) { advance_disk(p_.disk[i], now_); }
 
   // Within t_c of either disk's previous collision the TC model makes a collision elastic.
   bool tc_elastic(std::int32_t i, std::int32_t j) const {
@@ -453,18 +449,11 @@ class Engine final : public EngineApi<T> {
   }
 
   void wrap(std::int32_t i, CrossDir dir) {
-    advance(i);
+    static constexpr std::int32_t kWrapOf[] = {kWrapRight, kWrapLeft, kWrapTop, kWrapBottom};
     Disk<T>& d = p_.disk[i];
-    switch (dir) {
-      case kCrossRight: d.x = d.x - lx_; break;
-      case kCrossLeft: d.x = d.x + lx_; break;
-      case kCrossUp: d.y = d.y - ly_; break;
-      case kCrossDown: d.y = d.y + ly_; break;
-    }
-    if (!sinks_.empty()) {
-      static constexpr std::int32_t kWrapOf[] = {kWrapRight, kWrapLeft, kWrapTop, kWrapBottom};
+    wrap_disk(d, now_, kWrapOf[dir], lx_, ly_);
+    if (!sinks_.empty())
       emit({now_, EventKind::Wrap, false, i, kWrapOf[dir], d.vx, d.vy, T(0), T(0), d.vx, d.vy, T(0), T(0)});
-    }
   }
 
   void sample(T t) {
@@ -480,9 +469,7 @@ class Engine final : public EngineApi<T> {
     now_ = t;
     ++next_action_index_;
     for (std::size_t i = 0; i < p_.size(); ++i) {
-      advance(std::int32_t(i));
-      p_.disk[i].vx = -p_.disk[i].vx;
-      p_.disk[i].vy = -p_.disk[i].vy;
+      reverse_disk(p_.disk[i], now_);
       ++p_.disk[i].counter;
       p_.disk[i].last_partner = -1;
     }
@@ -535,7 +522,7 @@ class Engine final : public EngineApi<T> {
 
   RunStatus finish(RunStatus s) {
     status_ = s;
-    for (Sink<T>* sink : sinks_) sink->on_finish(now_, p_);
+    for (Sink<T>* sink : sinks_) sink->on_finish(now_, p_, s);
     return s;
   }
 

@@ -16,22 +16,11 @@
 #include "ede/initial_state.hpp"
 #include "ede/particles.hpp"
 #include "ede/result.hpp"
+#include "ede/run_status.hpp"
 #include "ede/scene.hpp"
 #include "ede/sink.hpp"
 
 namespace ede {
-
-enum class RunStatus {
-  Running,            // run() returned because its event budget was used; call it again
-  ReachedTime,        // stop.time reached (the state is reported at exactly that time)
-  ReachedEvents,      // stop.events processed
-  ReachedCollisions,  // stop.collisions_per_particle reached
-  ReachedEnergy,      // kinetic energy fell to stop.energy_fraction of the initial
-  NoMoreEvents,       // nothing will ever happen again (every disk at rest, or moving freely forever)
-  Stalled,            // time stopped advancing: inelastic collapse; see stall_message()
-};
-const char* to_string(RunStatus);
-bool is_finished(RunStatus);
 
 enum class Algorithm {
   Cells,     // uniform grid + per-particle lazy state + one event per particle: O(log N) per event

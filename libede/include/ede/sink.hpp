@@ -9,6 +9,7 @@
 
 #include "ede/event.hpp"
 #include "ede/particles.hpp"
+#include "ede/run_status.hpp"
 
 namespace ede {
 
@@ -40,8 +41,10 @@ class Sink {
   // After the predictions were rebuilt from the state alone (start, actions, every rebuild interval):
   // the points from which a run can be resumed bit for bit.
   virtual void on_rebuild(const RebuildPoint<T>& point) { (void)point; }
-  // Once, when the run stops, with the time the run reached.
-  virtual void on_finish(T time, const Particles<T>& particles) { (void)time, (void)particles; }
+  // Once, when the run stops, with the time the run reached and why it stopped.
+  virtual void on_finish(T time, const Particles<T>& particles, RunStatus status) {
+    (void)time, (void)particles, (void)status;
+  }
   virtual bool wants_cell_events() const { return false; }
 };
 
