@@ -119,12 +119,13 @@ class Engine final : public EngineApi<T> {
         ++done;
         if (const RunStatus s = check_stops(); s != RunStatus::Running) return finish(s);
         if (opt_.rebuild_interval && counts_.events() % opt_.rebuild_interval == 0) rebuild();
-      } else if (t_sample != kNever<T> && t_sample <= t_action && t_sample <= t_stop) {
-        sample(t_sample);
-      } else if (t_action != kNever<T> && t_action <= t_stop) {
+      } else if (t_action != kNever<T> && t_action <= t_sample && t_action <= t_stop) {
+        // Everything that happens at time <= t, actions included, happens before an observer looks at t.
         reverse_velocities(t_action);
         ++done;
         if (const RunStatus s = check_stops(); s != RunStatus::Running) return finish(s);
+      } else if (t_sample != kNever<T> && t_sample <= t_stop) {
+        sample(t_sample);
       } else if (t_stop != kNever<T>) {
         now_ = t_stop;
         return finish(RunStatus::ReachedTime);
