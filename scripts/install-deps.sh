@@ -3,7 +3,7 @@
 # Run as root (or with sudo). Used by the README's two commands and by CI.
 set -eu
 
-PACKAGES="build-essential cmake libeigen3-dev capnproto libcapnp-dev libzstd-dev libcli11-dev catch2 \
+PACKAGES="build-essential cmake clang libeigen3-dev capnproto libcapnp-dev libzstd-dev libcli11-dev catch2 \
 libtomlplusplus-dev"
 
 missing=""

@@ -1,6 +1,8 @@
 // Helpers for log tests: run an engine with a LogWriter (and a Recorder) in-process.
 #pragma once
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -12,7 +14,10 @@
 
 namespace ede::test {
 
-inline std::string temp_path(const std::string& name) { return std::string(EDE_BINARY_DIR) + "/tests/" + name; }
+// Unique per process: ctest runs test cases in parallel processes, which must not share scratch files.
+inline std::string temp_path(const std::string& name) {
+  return std::string(EDE_BINARY_DIR) + "/tests/" + std::to_string(::getpid()) + "-" + name;
+}
 
 template <class T>
 struct LoggedRun {

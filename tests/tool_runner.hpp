@@ -2,6 +2,7 @@
 #pragma once
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <fstream>
@@ -27,7 +28,7 @@ inline std::string source_path(const std::string& rel) { return std::string(EDE_
 
 // Runs `tool args` (args already shell-quoted as needed) with stdout and stderr captured to temp files.
 inline ToolRun run_tool(const std::string& tool, const std::string& args, const std::string& tag) {
-  const std::string base = std::string(EDE_BINARY_DIR) + "/tests/tool-" + tag;
+  const std::string base = std::string(EDE_BINARY_DIR) + "/tests/tool-" + std::to_string(::getpid()) + "-" + tag;
   const std::string cmd = tool_path(tool) + " " + args + " >" + base + ".out 2>" + base + ".err";
   const int raw = std::system(cmd.c_str());
   ToolRun r;
