@@ -34,8 +34,9 @@ Status add_chunk(const LogReader& log, const LogRecordRef& ref, ZSTD_CCtx* cctx,
   try {
     capnp::FlatArrayMessageReader message(as_words(words.value()), reader_options(words.value()));
     const auto chunk = message.getRoot<logschema::Chunk>();
-    const capnp::Data::Reader cols[kColumns] = {chunk.getTimes(),    chunk.getKinds(),         chunk.getDisks(),
-                                                chunk.getPartners(), chunk.getVelocitiesRaw(), chunk.getVelocityResiduals()};
+    const capnp::Data::Reader cols[kColumns] = {chunk.getTimes(),         chunk.getKinds(),
+                                                chunk.getDisks(),         chunk.getPartners(),
+                                                chunk.getVelocitiesRaw(), chunk.getVelocityResiduals()};
     for (std::size_t c = 0; c < kColumns; ++c) {
       auto z = compressed_size(cctx, cols[c]);
       if (!z) return z.error();

@@ -7,6 +7,7 @@
 #include <capnp/message.h>
 #include <capnp/serialize.h>
 
+#include <algorithm>
 #include <cstring>
 
 #include "build_info.hpp"
@@ -54,6 +55,10 @@ std::vector<unsigned char> one_scalar(T v) {
 
 }  // namespace
 
+std::uint64_t auto_keyframe_interval(std::size_t disks) {
+  return std::max<std::uint64_t>(std::uint64_t(1) << 20, 4 * std::uint64_t(disks));
+}
+
 LogSettings LogSettings::from(const LogSpec& spec) {
   LogSettings s;
   if (spec.keyframe_interval) s.keyframe_interval = *spec.keyframe_interval;
@@ -97,8 +102,10 @@ struct LogWriter<T>::Impl {
   Impl(const std::string& path, const LogRunInfo& r, const LogSettings& s, std::uint64_t start, int level)
       : run(r), settings(s), out(path, start, level) {}
 
+  // What needs the disks: the masses (residual predictions) and the automatic keyframe interval.
   void ensure_masses(const Particles<T>& p) {
     if (mass.empty()) mass = p.mass;
+    if (settings.keyframe_interval == 0) settings.keyframe_interval = auto_keyframe_interval(p.size());
   }
 
   void write_header(const Particles<T>& p) {
@@ -244,8 +251,7 @@ template <class T>
 Result<std::unique_ptr<LogWriter<T>>> LogWriter<T>::create(const std::string& path, const LogRunInfo& run,
                                                            const LogSettings& settings,
                                                            const LogContinuation* continuation) {
-  if (settings.chunk_events == 0 || settings.keyframe_interval == 0)
-    return Error{"log settings: chunk_events and keyframe_interval must be positive"};
+  if (settings.chunk_events == 0) return Error{"log settings: chunk_events must be positive"};
   const std::uint64_t start = continuation ? continuation->cut_offset : 0;
   auto impl = std::make_unique<Impl>(path, run, settings, start, settings.compression_level);
   if (std::string e = impl->out.error(); !e.empty()) return Error{e};

@@ -1,7 +1,9 @@
 // ede-bench: the project's benchmarks (not timed tests). Subcommands:
 //   speed  events per second, ns and cycles per event, bytes per disk, against the all-pairs baseline.
+//   log    event log: bytes per event, zstd level, logging overhead, seek time and replay throughput.
 #include <CLI/CLI.hpp>
 
+#include "bench_log.hpp"
 #include "bench_speed.hpp"
 
 int main(int argc, char** argv) {
@@ -17,7 +19,33 @@ int main(int argc, char** argv) {
   s->add_option("--baseline-seconds", speed.baseline_seconds, "approximate length of each baseline run");
   s->add_option("--csv", speed.csv_path, "also write the table as CSV");
 
+  ede::bench::LogBenchOptions log;
+  bool quick = false;
+  CLI::App* l = app.add_subcommand("log", "event log: bytes per event, zstd level, overhead, seek, replay speed");
+  l->add_option("scenes", log.scenes, "scene files (default: four N = 10^3 and 10^4 scenes of examples/bench)");
+  l->add_option("--reference", log.reference, "the scene of the level, overhead and seek measurements");
+  CLI::Option* repeat = l->add_option("--repeat", log.repeat, "runs per configuration; medians are reported")
+                            ->check(CLI::Range(1, 100));
+  CLI::Option* events = l->add_option("--events", log.events, "override stop.events of every scene (0: keep)");
+  CLI::Option* seek_events =
+      l->add_option("--seek-events", log.seek_events, "engine events (stop.events) of the logs built for seeking");
+  l->add_flag("--skip-seek", log.skip_seek, "skip the seek and replay measurements");
+  l->add_option("--levels", log.levels, "zstd levels to compare")->delimiter(',')->check(CLI::Range(1, 22));
+  l->add_option("--csv", log.csv_prefix, "also write the tables as PREFIX-{scenes,columns,levels,seek}.csv");
+  l->add_option("--out-dir", log.out_dir, "where the temporary logs go (deleted at the end)");
+  l->add_flag("--quick", quick, "a smoke run (well under a minute): 1 repeat, 5e5 events, 2e6 seek events");
+
   CLI11_PARSE(app, argc, argv);
   if (*s) return ede::bench::run_speed(speed);
+  if (*l) {
+    if (log.scenes.empty()) log.scenes = ede::bench::default_log_bench_scenes();
+    if (log.reference.empty()) log.reference = ede::bench::default_log_bench_reference();
+    if (quick) {
+      if (!repeat->count()) log.repeat = 1;
+      if (!events->count()) log.events = 500000;
+      if (!seek_events->count()) log.seek_events = 2000000;
+    }
+    return ede::bench::run_log_bench(log);
+  }
   return 0;
 }

@@ -19,8 +19,13 @@
 
 namespace ede {
 
+// max(2^20, 4 N) logged events: a keyframe costs ~34 bytes per disk, events ~24 bytes each, so keyframes
+// stay under ~30% of a log at any N (a fixed 2^20 took 55% at N = 10^6), and seeking replays at most
+// ~4 N events (~0.3 s at N = 10^6, ~15 M events/s). See docs/performance.md, "Event log".
+std::uint64_t auto_keyframe_interval(std::size_t disks);
+
 struct LogSettings {
-  std::uint64_t keyframe_interval = 1u << 20;  // logged events between keyframes
+  std::uint64_t keyframe_interval = 0;         // logged events between keyframes; 0: auto_keyframe_interval
   std::uint32_t chunk_events = 16384;          // events per chunk
   int compression_level = 3;                   // zstd level (docs/log-format-choices in docs/performance.md)
   static LogSettings from(const LogSpec& spec);
