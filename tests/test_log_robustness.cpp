@@ -63,6 +63,7 @@ TEST_CASE("a truncated log reads up to its last complete record, or fails clearl
     }
     ++readable;
     REQUIRE_FALSE(log.value()->complete());
+    REQUIRE_FALSE(log.value()->damaged());  // cut short is what a killed run leaves: not damage
     REQUIRE(log.value()->incomplete_reason().find("event") != std::string::npos);
     REQUIRE(log.value()->total_events() <= full->total_events());
     // What it reads is a prefix of the original: replaying it ends where the original was at that event.
@@ -113,6 +114,7 @@ TEST_CASE("a flipped bit anywhere is an error or harmless, never a wrong answer"
     }
     if (!log.value()->complete()) {
       REQUIRE_FALSE(log.value()->incomplete_reason().empty());
+      REQUIRE(log.value()->damaged());  // a flipped bit is damage, never mistaken for a killed run
       REQUIRE(whole->seek_event(log.value()->total_events()));
       for (std::size_t i = 0; i < whole->particles().size(); ++i) {
         REQUIRE(replay.value()->particles().disk[i].x == whole->particles().disk[i].x);

@@ -181,6 +181,21 @@ class ChunkDecoder {
   std::string error_;
 };
 
+// The time of the last event of a chunk from its times column alone (times need no replayed state).
+template <class T>
+Result<T> last_time_of_column(const unsigned char* data, std::size_t size, std::uint32_t count) {
+  ByteReader r(data, size);
+  u128 key = 0;
+  for (std::uint32_t k = 0; k < count; ++k) {
+    u128 v;
+    if (!r.varint(v, ScalarBytes<T>::kBits)) return Error{"the time column is cut short"};
+    const u128 next = k == 0 ? v : key + v;
+    if (next < key || (next >> ScalarBytes<T>::kBits) != 0) return Error{"an event time overflows"};
+    key = next;
+  }
+  return from_ordered_key<T>(key);
+}
+
 // Applies a decoded event to a state with the shared state-update functions.
 template <class T>
 void apply_event(const DecodedEvent<T>& e, Particles<T>& state, T lx, T ly);

@@ -90,8 +90,13 @@ Result<std::shared_ptr<LogReader>> LogReader::open(const std::string& path) {
           return r;
         }
         index_problem = "the index is damaged (" + s.error().message + ")";
+        r->damaged_ = true;
       } else if (trailer) {
         index_problem = "the trailer points outside the file";
+        r->damaged_ = true;
+      } else if (std::memcmp(tr + 24, logfmt::kTrailerMagic.data(), 8) == 0) {
+        index_problem = "the trailer is damaged";
+        r->damaged_ = true;
       }
     }
   }
@@ -239,8 +244,9 @@ Status LogReader::scan_records(std::uint64_t from) {
       break;
     }
     const auto h = logfmt::decode_record_header(rh_bytes, why);
-    if (!h) {
+    if (!h) {  // the writer writes whole headers: a full one that does not check out is damage
       stop = "damaged record header at byte " + std::to_string(offset) + " (" + why + ")";
+      damaged_ = true;
       break;
     }
     if (h->payload_size > file_size_ - offset - sizeof rh_bytes) {
@@ -252,6 +258,7 @@ Status LogReader::scan_records(std::uint64_t from) {
     if (h->kind == logfmt::RecordKind::Chunk) {
       if (h->first_event != next_event || h->event_count == 0 || h->event_count > (1u << 24)) {
         stop = "a chunk out of sequence at byte " + std::to_string(offset);
+        damaged_ = true;
         break;
       }
       next_event += h->event_count;
@@ -259,11 +266,15 @@ Status LogReader::scan_records(std::uint64_t from) {
     } else if (h->kind == logfmt::RecordKind::Keyframe) {
       if (h->first_event != next_event) {
         stop = "a keyframe out of sequence at byte " + std::to_string(offset);
+        damaged_ = true;
         break;
       }
       keyframes_.push_back(ref);
-    } else {
-      stop = "an unexpected " + std::string(logfmt::to_string(h->kind)) + " record at byte " + std::to_string(offset);
+    } else {  // an index: the file was cut before its trailer (killed then), or something follows it (damage)
+      const bool last = file_size_ - (offset + sizeof rh_bytes + h->payload_size) < logfmt::kTrailerSize;
+      stop = last ? "the run was stopped after its index, before the trailer"
+                  : "an unexpected " + std::string(logfmt::to_string(h->kind)) + " record at byte " + std::to_string(offset);
+      damaged_ = !last;
       break;
     }
     offset += sizeof rh_bytes + h->payload_size;

@@ -103,6 +103,17 @@ Result<KeyframeData<T>> read_keyframe(const LogReader& log, const LogRecordRef& 
   return k;
 }
 
+// The digits that read back to the same value of T.
+template <class T>
+std::string exact_text(T v) {
+  char b[48];
+  if constexpr (std::is_same_v<T, long double>)
+    std::snprintf(b, sizeof b, "%.21Lg", v);
+  else
+    std::snprintf(b, sizeof b, "%.*g", std::is_same_v<T, float> ? 9 : 17, double(v));
+  return b;
+}
+
 }  // namespace
 
 template <class T>
@@ -130,6 +141,7 @@ Result<std::unique_ptr<Replay<T>>> Replay<T>::create(std::shared_ptr<const LogRe
   r->lx_ = T(h.lx);
   r->ly_ = T(h.ly);
   if (Status s = r->load_keyframe(0); !s) return s.error();
+  r->last_event_time_initial_ = r->time_;
   return r;
 }
 
@@ -234,10 +246,23 @@ Status Replay<T>::advance(std::uint64_t target_event, const T* until_time,
   return Ok{};
 }
 
+// Complete logs record the final time; for an incomplete one it is the last event's time, read exactly
+// from the last chunk's times column (the record headers hold it only as a double).
 template <class T>
 T Replay<T>::final_time() const {
   if (log_->complete()) return scalar_from_bytes<T>(log_->final_time_bytes().data());
-  return log_->chunks().empty() ? T(log_->keyframes().back().time_last) : T(log_->chunks().back().time_last);
+  if (log_->chunks().empty()) return last_event_time_initial_;
+  const LogRecordRef& ref = log_->chunks().back();
+  auto words = log_->load_message(ref.offset, ref.payload_size);
+  if (words) {
+    try {
+      capnp::FlatArrayMessageReader message(as_words(words.value()), reader_options(words.value()));
+      const auto times = message.getRoot<logschema::Chunk>().getTimes();
+      if (auto t = last_time_of_column<T>(times.begin(), times.size(), std::uint32_t(ref.count))) return t.value();
+    } catch (const kj::Exception&) {
+    }
+  }
+  return T(ref.time_last);  // damaged: the approximation; seeking will report the damage
 }
 
 template <class T>
@@ -245,8 +270,8 @@ Status Replay<T>::seek_time(T t) {
   if (!std::isfinite(double(t)) || t < T(0)) return Error{"the time must be finite and >= 0"};
   const T end = final_time();
   if (t > end)
-    return Error{log_->path() + ": t = " + std::to_string(double(t)) + " is after the end of the log (t = " +
-                 std::to_string(double(end)) + (log_->complete() ? ")" : ", the log is incomplete)")};
+    return Error{log_->path() + ": t = " + exact_text(t) + " is after the end of the log (t = " + exact_text(end) +
+                 (log_->complete() ? ")" : ", the last event of an incomplete log)")};
   // The last keyframe at or before t (the index's times are doubles: check the exact time after loading).
   const auto& kfs = log_->keyframes();
   std::size_t k = 0;

@@ -59,6 +59,10 @@ class LogReader {
   std::uint64_t file_size() const { return file_size_; }
   // Complete: closed by an index and trailer. Otherwise `incomplete_reason` says where reading stopped.
   bool complete() const { return complete_; }
+  // Damaged: not merely cut short at the end (a killed run) but corrupted: a record header whose checksum
+  // fails, a trailer whose index does not check out, bytes that are not records. What precedes the damage
+  // is still readable; tools that vouch for a log (verify) must fail on it.
+  bool damaged() const { return damaged_; }
   const std::string& incomplete_reason() const { return incomplete_reason_; }
   const std::string& final_status() const { return final_status_; }
   const std::vector<unsigned char>& final_time_bytes() const { return final_time_; }
@@ -82,6 +86,7 @@ class LogReader {
   std::vector<LogRecordRef> chunks_, keyframes_;
   std::uint64_t total_events_ = 0;
   bool complete_ = false;
+  bool damaged_ = false;
   std::string incomplete_reason_, final_status_;
   std::vector<unsigned char> final_time_;
   std::uint64_t header_record_end_ = 0;

@@ -66,6 +66,7 @@ class Replay {
   T lx_{}, ly_{};
   T time_{};
   T last_event_time_{};
+  T last_event_time_initial_{};  // the first keyframe's time: the end of a log with no chunk
   std::uint64_t applied_ = 0;
   bool loaded_ = false;
 };
