@@ -1,11 +1,12 @@
 #!/bin/sh
 # The README's main command: install what is missing, build, run the default scene examples/gas.toml.
-# Writes out/gas-summary.json and out/gas-final.csv and prints the run's summary.
+# Writes the event log out/gas.ede, prints the run's summary (kept in out/gas-summary.txt), and rebuilds
+# the exact final state from the log into out/gas-final.csv.
 set -eu
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh
 mkdir -p out
-build/tools/ede-sim examples/gas.toml --final-state out/gas-final.csv
-build/tools/ede-sim examples/gas.toml --json --quiet > out/gas-summary.json
-echo "demo: wrote out/gas-final.csv and out/gas-summary.json"
+build/tools/ede-sim examples/gas.toml -o out/gas.ede | tee out/gas-summary.txt
+build/tools/ede-replay out/gas.ede --at end -o out/gas-final.csv
+echo "demo: wrote out/gas.ede, out/gas-summary.txt and out/gas-final.csv"
