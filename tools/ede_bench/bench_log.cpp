@@ -24,6 +24,7 @@
 #include <memory>
 #include <sstream>
 
+#include "bench_common.hpp"
 #include "child_process.hpp"
 #include "cpu_cycles.hpp"
 #include "ede/engine.hpp"
@@ -45,33 +46,6 @@ constexpr const char* kNoRebuilds = "engine.rebuild_interval=1099511627776";  //
 
 // ---------------------------------------------------------------------------------------------- helpers
 
-using KeyValues = std::map<std::string, double>;
-
-KeyValues parse_key_values(const std::string& text) {
-  KeyValues kv;
-  std::istringstream in(text);
-  for (std::string item; in >> item;) {
-    const auto eq = item.find('=');
-    if (eq != std::string::npos) kv[item.substr(0, eq)] = std::strtod(item.c_str() + eq + 1, nullptr);
-  }
-  return kv;
-}
-
-double get(const KeyValues& kv, const std::string& key) { return kv.count(key) ? kv.at(key) : 0.0; }
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-std::string fmt(double v, int digits = 3) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-  return buf;
-}
-
 std::string percent(double ratio) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%+.1f %%", 100 * (ratio - 1));
@@ -90,13 +64,6 @@ std::string power_of_two(std::uint64_t v) {
   int k = 0;
   while ((std::uint64_t(1) << k) < v) ++k;
   return (std::uint64_t(1) << k) == v ? "2^" + std::to_string(k) : std::to_string(v);
-}
-
-std::string scene_label(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
-  if (name.size() > 5 && name.substr(name.size() - 5) == ".toml") name.resize(name.size() - 5);
-  return name;
 }
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {

@@ -11,6 +11,7 @@
 #include <map>
 #include <sstream>
 
+#include "bench_common.hpp"
 #include "child_process.hpp"
 #include "cpu_cycles.hpp"
 #include "ede/engine.hpp"
@@ -29,18 +30,6 @@ struct Measurement {
   double peak_rss = 0;
   double events_per_second() const { return wall > 0 ? events / wall : 0; }
 };
-
-using KeyValues = std::map<std::string, double>;
-
-KeyValues parse_key_values(const std::string& text) {
-  KeyValues kv;
-  std::istringstream in(text);
-  for (std::string item; in >> item;) {
-    const auto eq = item.find('=');
-    if (eq != std::string::npos) kv[item.substr(0, eq)] = std::strtod(item.c_str() + eq + 1, nullptr);
-  }
-  return kv;
-}
 
 // The child's side: load, set up, run, report key=value pairs.
 int measure_in_child(const std::string& path, std::uint64_t events, Algorithm algorithm, std::string& out) {
@@ -84,23 +73,15 @@ Measurement measure(const std::string& path, std::uint64_t events, Algorithm alg
     return m;
   }
   const KeyValues kv = parse_key_values(r.output);
-  const auto get = [&](const char* k) { return kv.count(k) ? kv.at(k) : 0.0; };
-  m.events = get("events");
-  m.collisions = get("collisions");
-  m.wall = get("wall");
-  m.cycles = get("cycles");
-  m.engine_bytes = get("engine_bytes");
-  m.disks = get("disks");
-  m.setup = get("setup");
+  m.events = get(kv, "events");
+  m.collisions = get(kv, "collisions");
+  m.wall = get(kv, "wall");
+  m.cycles = get(kv, "cycles");
+  m.engine_bytes = get(kv, "engine_bytes");
+  m.disks = get(kv, "disks");
+  m.setup = get(kv, "setup");
   m.peak_rss = double(r.peak_rss_bytes);
   return m;
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 struct Row {
@@ -112,19 +93,6 @@ struct Row {
   double baseline_events_per_second = 0;
   double baseline_events = 0;
 };
-
-std::string fmt(double v, int digits = 3) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-  return buf;
-}
-
-std::string scene_label(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
-  if (name.size() > 5 && name.substr(name.size() - 5) == ".toml") name.resize(name.size() - 5);
-  return name;
-}
 
 Row bench_scene(const std::string& path, const SpeedOptions& o) {
   Row row;
