@@ -1,6 +1,8 @@
 // Damaged logs: truncated anywhere, a bit flipped anywhere, another file, a newer version. The reader
 // must answer with a clear error or read what is intact; whatever it reads must be right: a damaged log
 // either fails or yields exactly the original's content (checked with the content digest).
+#include <sys/resource.h>
+
 #include <catch2/catch.hpp>
 #include <fstream>
 #include <iterator>
@@ -166,4 +168,36 @@ TEST_CASE("a log of one scalar type is not replayed as another", "[log][robust]"
   auto r = Replay<float>::create(log);
   REQUIRE_FALSE(r.ok());
   CHECK(r.error().message.find("double") != std::string::npos);
+}
+
+TEST_CASE("a forged content size does not make the reader allocate it", "[log][robust]") {
+  // A keyframe large enough that zstd writes a 4-byte content size; we rewrite it to ~3.75 GiB.
+  const InitialState s = lattice_gas(100, 0.002, 1.0, 91);
+  EngineOptions o;
+  o.boundary = BoundaryKind::Periodic;
+  o.stop.events = 10;
+  const std::string path = run_logged<double>(s, o, "forged.ede").path;
+  std::vector<char> bytes = read_bytes(path);
+  auto log = open_log(path);
+  const LogRecordRef kf = log->keyframes().front();
+  const std::size_t frame = kf.offset + 56;
+  REQUIRE(std::uint32_t(static_cast<unsigned char>(bytes[frame])) == 0x28);  // zstd magic 28 B5 2F FD
+  const unsigned char descriptor = static_cast<unsigned char>(bytes[frame + 4]);
+  REQUIRE((descriptor >> 6) == 2);  // a 4-byte frame content size field
+  const bool single_segment = (descriptor >> 5) & 1;
+  const std::size_t dict_bytes = std::size_t((const std::size_t[]){0, 1, 2, 4}[descriptor & 3]);
+  const std::size_t fcs = frame + 5 + (single_segment ? 0 : 1) + dict_bytes;
+  const std::uint32_t forged = 0xF0000000u;
+  for (int k = 0; k < 4; ++k) bytes[fcs + std::size_t(k)] = char((forged >> (8 * k)) & 0xFF);
+  const std::string damaged = temp_path("forged-damaged.ede");
+  write_bytes(damaged, bytes, bytes.size());
+
+  auto reread = LogReader::open(damaged);
+  REQUIRE(reread.ok());
+  auto r = Replay<double>::create(reread.value());  // loads keyframe 0
+  REQUIRE_FALSE(r.ok());
+  CHECK(r.error().message.find("forged-damaged.ede") != std::string::npos);
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  CHECK(usage.ru_maxrss < 512 * 1024);  // kilobytes: far below the 3.75 GiB the frame claims
 }

@@ -7,6 +7,7 @@
 #include <unistd.h>
 #include <zstd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -21,6 +22,7 @@ namespace ede {
 namespace {
 
 constexpr std::uint32_t kMaxDisks = 100000000;
+constexpr std::uint64_t kInitialBuffer = std::uint64_t(1) << 20;  // decompression starts with 1 MiB
 
 std::string at(const std::string& path, std::uint64_t offset) {
   return path + " (byte " + std::to_string(offset) + ")";
@@ -121,10 +123,38 @@ Result<std::vector<std::uint64_t>> LogReader::load_message(std::uint64_t offset,
     return Error{at(path_, offset) + ": implausible record size " + std::to_string(content)};
   if (ZSTD_findFrameCompressedSize(compressed.data(), compressed.size()) != payload_size)
     return Error{at(path_, offset) + ": the zstd frame does not fill its record"};
-  std::vector<std::uint64_t> words(content / 8);
-  const std::size_t n = ZSTD_decompress(words.data(), content, compressed.data(), compressed.size());
-  if (ZSTD_isError(n)) return Error{at(path_, offset) + ": corrupted record (" + ZSTD_getErrorName(n) + ")"};
-  if (n != content) return Error{at(path_, offset) + ": the record decompresses to the wrong size"};
+  // Streamed into a buffer that grows only as output arrives: a corrupted declared size cannot make us
+  // allocate gigabytes up front; the output must then match the declared size exactly.
+  std::vector<std::uint64_t> words(std::min<std::uint64_t>(content, kInitialBuffer) / 8);
+  ZSTD_DStream* stream = ZSTD_createDStream();
+  ZSTD_initDStream(stream);
+  ZSTD_inBuffer in{compressed.data(), compressed.size(), 0};
+  std::size_t produced = 0;
+  std::string problem;
+  for (;;) {
+    if (produced == words.size() * 8) {
+      if (produced >= content) {
+        problem = "the record decompresses to more than its declared size";
+        break;
+      }
+      words.resize(std::min<std::uint64_t>(content, 2 * produced) / 8);
+    }
+    ZSTD_outBuffer out{words.data(), words.size() * 8, produced};
+    const std::size_t r = ZSTD_decompressStream(stream, &out, &in);
+    produced = out.pos;
+    if (ZSTD_isError(r)) {
+      problem = std::string("corrupted record (") + ZSTD_getErrorName(r) + ")";
+      break;
+    }
+    if (r == 0) break;  // the frame is complete and its checksum verified
+    if (in.pos == in.size && out.pos < out.size) {
+      problem = "the record's zstd frame is cut short";
+      break;
+    }
+  }
+  ZSTD_freeDStream(stream);
+  if (problem.empty() && produced != content) problem = "the record decompresses to the wrong size";
+  if (!problem.empty()) return Error{at(path_, offset) + ": " + problem};
   return words;
 }
 
