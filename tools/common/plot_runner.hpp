@@ -1,0 +1,17 @@
+// Running a plotting script of tools/plot on a CSV: the tools write numbers, matplotlib draws them.
+//
+// Scripts run with Debian's /usr/bin/python3 (where python3-matplotlib installs), falling back to python3
+// on PATH; a missing matplotlib gives a message saying what to install, not a Python traceback.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ede/result.hpp"
+
+namespace ede::tools {
+
+// Runs `python3 EDE_PLOT_DIR/<script> <args...>`; the error carries the script's stderr.
+Status run_plot_script(const std::string& script, const std::vector<std::string>& args);
+
+}  // namespace ede::tools

@@ -1,0 +1,16 @@
+// Placeholder until the hist subcommand is written: registers it and says it is not available yet.
+#include <cstdio>
+
+#include "stats_tool.hpp"
+
+namespace ede::stats_tool {
+
+Command add_hist_command(CLI::App& app) {
+  app.add_subcommand("hist", "(not yet available)");
+  return [] {
+    std::fprintf(stderr, "ede-stats: hist is not available yet\n");
+    return 1;
+  };
+}
+
+}  // namespace ede::stats_tool

@@ -1,0 +1,19 @@
+// What the ede-stats subcommands share. Each subcommand lives in its own file and registers itself with
+// add_*_command, which returns the function main calls once the command line is parsed (the pattern of
+// ede-replay). Every figure comes from a log: the subcommands replay it, they never re-run the physics.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace ede::stats_tool {
+
+using Command = std::function<int()>;
+
+Command add_hist_command(CLI::App& app);        // speed and energy histograms, Maxwell-Boltzmann fit
+Command add_species_command(CLI::App& app);     // per-species mean speed, energy, temperature
+Command add_energy_command(CLI::App& app);      // kinetic energy on a fine time grid
+Command add_collisions_command(CLI::App& app);  // collisions per disk, rate, mean free time, speed classes
+Command add_pressure_command(CLI::App& app);    // pressure from the walls and from the virial
+
+}  // namespace ede::stats_tool
