@@ -3,9 +3,10 @@
 # Run as root (or with sudo). Used by the README's two commands and by CI.
 set -eu
 
-# python3-matplotlib: the figures (tools/plot); libcairo2-dev: ede-render. ffmpeg is optional (movies).
+# python3-matplotlib: the figures (tools/plot); libcairo2-dev: ede-render; libclang-rt-14-dev: sanitizers and
+# libFuzzer for Clang (CI). ffmpeg is optional (movies).
 PACKAGES="build-essential cmake clang pkg-config libeigen3-dev capnproto libcapnp-dev libzstd-dev libcli11-dev \
-catch2 libtomlplusplus-dev python3-matplotlib libcairo2-dev"
+catch2 libtomlplusplus-dev python3-matplotlib libcairo2-dev libclang-rt-14-dev"
 
 missing=""
 for p in $PACKAGES; do

@@ -196,8 +196,9 @@ Result<T> last_time_of_column(const unsigned char* data, std::size_t size, std::
   return from_ordered_key<T>(key);
 }
 
-// Applies a decoded event to a state with the shared state-update functions.
+// Applies a decoded event to a state with the shared state-update functions. Returns false if a record
+// it touched is no longer finite: a log can only say so if it is corrupted (e.g. a huge but finite time).
 template <class T>
-void apply_event(const DecodedEvent<T>& e, Particles<T>& state, T lx, T ly);
+bool apply_event(const DecodedEvent<T>& e, Particles<T>& state, T lx, T ly);
 
 }  // namespace ede

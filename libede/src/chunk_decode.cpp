@@ -140,7 +140,12 @@ Status ChunkDecoder<T>::check_consumed() const {
 }
 
 template <class T>
-void apply_event(const DecodedEvent<T>& e, Particles<T>& p, T lx, T ly) {
+static bool finite_record(const Disk<T>& d) {
+  return std::isfinite(double(d.x)) && std::isfinite(double(d.y)) && std::isfinite(double(d.t));
+}
+
+template <class T>
+bool apply_event(const DecodedEvent<T>& e, Particles<T>& p, T lx, T ly) {
   switch (e.kind) {
     case EventKind::Pair: {
       Disk<T>& a = p.disk[std::size_t(e.i)];
@@ -148,28 +153,37 @@ void apply_event(const DecodedEvent<T>& e, Particles<T>& p, T lx, T ly) {
       advance_disk(a, e.time);
       advance_disk(b, e.time);
       a.vx = e.vix, a.vy = e.viy, b.vx = e.vjx, b.vy = e.vjy;
-      break;
+      return finite_record(a) && finite_record(b);
     }
     case EventKind::Wall: {
       Disk<T>& a = p.disk[std::size_t(e.i)];
       advance_disk(a, e.time);
       a.vx = e.vix, a.vy = e.viy;
-      break;
+      return finite_record(a);
     }
-    case EventKind::Wrap: wrap_disk(p.disk[std::size_t(e.i)], e.time, e.j, lx, ly); break;
-    case EventKind::Action:
-      for (Disk<T>& d : p.disk) reverse_disk(d, e.time);
-      break;
-    default: break;
+    case EventKind::Wrap: {
+      Disk<T>& a = p.disk[std::size_t(e.i)];
+      wrap_disk(a, e.time, e.j, lx, ly);
+      return finite_record(a);
+    }
+    case EventKind::Action: {
+      bool ok = true;
+      for (Disk<T>& d : p.disk) {
+        reverse_disk(d, e.time);
+        ok = ok && finite_record(d);
+      }
+      return ok;
+    }
+    default: return true;
   }
 }
 
 template class ChunkDecoder<float>;
 template class ChunkDecoder<double>;
 template class ChunkDecoder<long double>;
-template void apply_event<float>(const DecodedEvent<float>&, Particles<float>&, float, float);
-template void apply_event<double>(const DecodedEvent<double>&, Particles<double>&, double, double);
-template void apply_event<long double>(const DecodedEvent<long double>&, Particles<long double>&, long double,
+template bool apply_event<float>(const DecodedEvent<float>&, Particles<float>&, float, float);
+template bool apply_event<double>(const DecodedEvent<double>&, Particles<double>&, double, double);
+template bool apply_event<long double>(const DecodedEvent<long double>&, Particles<long double>&, long double,
                                        long double);
 
 }  // namespace ede

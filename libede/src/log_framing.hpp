@@ -25,7 +25,6 @@ constexpr std::size_t kTrailerSize = 32;
 
 // Limits a reader enforces before allocating: a payload larger than this is corruption, not data.
 constexpr std::uint64_t kMaxPayloadBytes = std::uint64_t(1) << 31;     // compressed
-constexpr std::uint64_t kMaxContentBytes = std::uint64_t(1) << 32;     // decompressed
 
 enum class RecordKind : std::uint8_t { Header = 1, Chunk = 2, Keyframe = 3, Index = 4 };
 const char* to_string(RecordKind kind);

@@ -21,7 +21,6 @@ namespace ede {
 
 namespace {
 
-constexpr std::uint32_t kMaxDisks = 100000000;
 constexpr std::uint64_t kInitialBuffer = std::uint64_t(1) << 20;  // decompression starts with 1 MiB
 
 std::string at(const std::string& path, std::uint64_t offset) {
@@ -49,9 +48,10 @@ LogReader::~LogReader() {
   if (fd_ >= 0) ::close(fd_);
 }
 
-Result<std::shared_ptr<LogReader>> LogReader::open(const std::string& path) {
+Result<std::shared_ptr<LogReader>> LogReader::open(const std::string& path, const LogLimits& limits) {
   std::shared_ptr<LogReader> r(new LogReader());
   r->path_ = path;
+  r->limits_ = limits;
   r->fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (r->fd_ < 0) return Error{"cannot open '" + path + "': " + std::strerror(errno)};
   struct stat st{};
@@ -119,8 +119,9 @@ Result<std::vector<std::uint64_t>> LogReader::load_message(std::uint64_t offset,
   const unsigned long long content = ZSTD_getFrameContentSize(compressed.data(), compressed.size());
   if (content == ZSTD_CONTENTSIZE_ERROR || content == ZSTD_CONTENTSIZE_UNKNOWN)
     return Error{at(path_, offset) + ": the record is not a zstd frame with a declared size"};
-  if (content == 0 || content > logfmt::kMaxContentBytes || content % 8 != 0)
-    return Error{at(path_, offset) + ": implausible record size " + std::to_string(content)};
+  if (content == 0 || content > limits_.max_record_bytes || content % 8 != 0)
+    return Error{at(path_, offset) + ": implausible record size " + std::to_string(content) + " bytes (limit " +
+                 std::to_string(limits_.max_record_bytes) + ")"};
   if (ZSTD_findFrameCompressedSize(compressed.data(), compressed.size()) != payload_size)
     return Error{at(path_, offset) + ": the zstd frame does not fill its record"};
   // Streamed into a buffer that grows only as output arrives: a corrupted declared size cannot make us
@@ -199,7 +200,7 @@ Status LogReader::read_header_record(std::uint64_t offset, std::uint64_t payload
   }
   const LogHeaderInfo& h = header_;
   const std::size_t w = scalar_width(h.scalar);
-  if (h.disks == 0 || h.disks > kMaxDisks || h.radius.size() != std::size_t(h.disks) * w ||
+  if (h.disks == 0 || h.disks > limits_.max_disks || h.radius.size() != std::size_t(h.disks) * w ||
       h.mass.size() != std::size_t(h.disks) * w || h.species.size() != h.disks)
     return Error{at(path_, offset) + ": the header's per-disk data does not match its disk count"};
   for (const std::uint32_t s : h.species)

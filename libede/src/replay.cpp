@@ -236,7 +236,9 @@ Status Replay<T>::advance(std::uint64_t target_event, const T* until_time,
     }
     const DecodedEvent<T>& e = *c.pending;
     if (until_time && e.time > *until_time) break;
-    apply_event(e, state_, lx_, ly_);
+    if (!apply_event(e, state_, lx_, ly_))
+      return Error{log_->path() + ": event " + std::to_string(e.index) +
+                   " leaves a disk at a non-finite position or time: the log is corrupted"};
     ++applied_;
     last_event_time_ = e.time;
     const ReplayedEvent<T> out{e.index, e.time, e.kind, e.i, e.j, e.vix, e.viy, e.vjx, e.vjy};

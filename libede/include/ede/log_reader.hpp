@@ -46,9 +46,17 @@ struct LogRecordRef {
   bool resumable = false;
 };
 
+// What a reader accepts before it allocates: a log claiming more is refused as implausible. The defaults
+// cover every run ede can make (10^8 disks; a record, e.g. a keyframe of 10^7 disks, up to 2 GiB);
+// fuzzing and services reading untrusted logs pass tighter ones.
+struct LogLimits {
+  std::uint32_t max_disks = 100000000;
+  std::uint64_t max_record_bytes = std::uint64_t(1) << 31;  // one decompressed record
+};
+
 class LogReader {
  public:
-  static Result<std::shared_ptr<LogReader>> open(const std::string& path);
+  static Result<std::shared_ptr<LogReader>> open(const std::string& path, const LogLimits& limits = {});
   ~LogReader();
 
   const std::string& path() const { return path_; }
@@ -80,6 +88,7 @@ class LogReader {
   Status scan_records(std::uint64_t from);
 
   std::string path_;
+  LogLimits limits_;
   int fd_ = -1;
   std::uint64_t file_size_ = 0;
   LogHeaderInfo header_;
