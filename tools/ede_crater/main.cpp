@@ -1,6 +1,42 @@
-// Placeholder until ede-crater is written.
-#include <cstdio>
-int main() {
-  std::fprintf(stderr, "ede-crater: not available yet\n");
-  return 1;
+// ede-crater: the crater a projectile leaves in a bed of disks, measured from event logs (docs/crater.md).
+//
+//   ede-crater LOG [--at T | --energy-fraction F] [--bed-species NAME] [--threshold X] [-o CSV] [--plot FILE]
+//   ede-crater scan SCENE --param KEY --values V1,V2,... [--seeds K] [--jobs J] [--set k=v]... [--out DIR]
+//
+// Thin: one file per subcommand, each parsing its options and calling libede (ede/crater.hpp); the
+// numbers come from logs by replay, never from running the physics here (a scan runs ede-sim, then
+// measures the logs). A first argument that is not a subcommand makes the command `measure`. Exit status:
+// 0 success, 1 bad input (a missing log, an unknown species, a scene error), 2 a bad command line.
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "crater_tool.hpp"
+
+int main(int argc, char** argv) {
+  using namespace ede::crater_tool;
+  CLI::App app{"ede-crater: measure the crater a projectile leaves in a bed of disks, from ede-sim's event logs"};
+  app.require_subcommand(1);
+  const std::vector<std::pair<std::string, Command>> commands = {
+      {"measure", add_measure_command(app)},
+      {"scan", add_scan_command(app)},
+  };
+
+  // `ede-crater LOG ...` is `ede-crater measure LOG ...`.
+  std::vector<char*> args(argv, argv + argc);
+  std::string measure = "measure";
+  if (argc > 1) {
+    const std::string first = argv[1];
+    bool known = first == "-h" || first == "--help";
+    for (const auto& [name, run] : commands) known = known || first == name;
+    if (!known) args.insert(args.begin() + 1, measure.data());
+  }
+  try {
+    app.parse(int(args.size()), args.data());
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;
+  }
+  for (const auto& [name, run] : commands)
+    if (app.got_subcommand(name)) return run();
+  return usage_error("give a log, or a subcommand");
 }

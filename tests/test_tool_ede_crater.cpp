@@ -1,0 +1,181 @@
+// ede-crater as a user runs it: a small crater log measured and written as CSV and a figure, the choice of
+// time, scans that are deterministic and independent of --jobs, and clear errors on bad input.
+//
+// Logs come from ede-sim on examples/crater.toml shrunk with --set: 200-400 bed disks of radius ~0.014
+// and a projectile of radius 0.07 (5 bed radii), which run in well under a second.
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "log_test_support.hpp"
+#include "tool_runner.hpp"
+
+using namespace ede::test;
+
+namespace {
+
+const std::string kScene = source_path("examples/crater.toml");
+const std::string kSmall = " --set species.projectile.radius=0.07";
+
+std::string make_crater_log(const std::string& name, const std::string& options) {
+  const std::string log = temp_path(name);
+  const ToolRun r = run_tool("ede-sim", kScene + " -q" + kSmall + options + " -o " + log, "crater-sim-" + name);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  return log;
+}
+
+ToolRun crater(const std::string& args, const std::string& tag) { return run_tool("ede-crater", args, "crater-" + tag); }
+
+std::string bytes_of(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+}  // namespace
+
+TEST_CASE("ede-crater: measures a small crater log, writes the profiles, the energy curve and a figure",
+          "[tool][ede-crater]") {
+  const std::string log = make_crater_log("crater-small.ede", " --set species.bed.count=400");
+  const std::string csv = temp_path("crater-small.csv"), png = temp_path("crater-small.png");
+  const ToolRun r = crater(log + " -o " + csv + " --plot " + png, "small");
+  INFO(r.out << r.err);
+  REQUIRE(r.status == 0);
+  for (const char* line : {"bed               400 disks: the species named 'bed'", "the first event after which at most 0.1",
+                           "depth             ", "width             ", "area              ", "displaced         "})
+    CHECK(contains(r.out, line));
+
+  const std::vector<std::string> profile = lines_of(bytes_of(csv));
+  REQUIRE(profile.size() == 36);  // header + 35 bins: 1 / (2 x 0.0141) = 35.4
+  CHECK(profile[0] == "x_left,x_right,x,h_before,h_after,drop,in_crater,disks_before,disks_after");
+  std::size_t in_crater = 0;
+  for (std::size_t k = 1; k < profile.size(); ++k) in_crater += contains(profile[k], ",1,") ? 1 : 0;
+  CHECK(in_crater > 0);
+  const std::string energy = temp_path("crater-small-energy.csv");
+  const std::vector<std::string> curve = lines_of(bytes_of(energy));
+  REQUIRE(curve.size() == 502);
+  CHECK(curve[0] == "t,energy_fraction");
+  CHECK(curve[1] == "0,1");
+  CHECK(bytes_of(png).substr(1, 3) == "PNG");
+}
+
+TEST_CASE("ede-crater: the time of the measurement: energy fraction, --at, --at end, never reached",
+          "[tool][ede-crater]") {
+  const std::string log = make_crater_log("crater-times.ede", " --set species.bed.count=200");
+  const ToolRun at = crater(log + " --at 0.1", "at");
+  REQUIRE(at.status == 0);
+  CHECK(contains(at.out, "measured at       t = 0.10000000000000001, after"));
+  CHECK(contains(at.out, "the time asked for"));
+  const ToolRun end = crater(log + " --at end", "end");
+  REQUIRE(end.status == 0);
+  CHECK(contains(end.out, "the log's end, as asked"));
+  const ToolRun never = crater(log + " --energy-fraction 0.01", "never");
+  REQUIRE(never.status == 0);
+  CHECK(contains(never.out, "the log's end: the kinetic energy never fell to 0.01"));
+  CHECK(contains(never.out, "never reached in this log"));
+  const ToolRun half = crater(log + " --energy-fraction 0.5 --threshold 0.001 --drop-threshold 2r", "half");
+  REQUIRE(half.status == 0);
+  CHECK(contains(half.out, "at most 0.5 of the initial kinetic energy"));
+  CHECK(contains(half.out, "moved by more than 0.001 ("));
+}
+
+TEST_CASE("ede-crater scan: deterministic CSV, the same for --jobs 1 and 2", "[tool][ede-crater]") {
+  const std::string common = "scan " + kScene + " --param species.projectile.mass --values 5,25 --seeds 2 -q" +
+                             kSmall + " --set species.bed.count=200 --out ";
+  const std::string a = temp_path("crater-scan-a"), b = temp_path("crater-scan-b"), c = temp_path("crater-scan-c");
+  const ToolRun ra = crater(common + a + " --jobs 2", "scan-a");
+  INFO(ra.out << ra.err);
+  REQUIRE(ra.status == 0);
+  REQUIRE(crater(common + b + " --jobs 2", "scan-b").status == 0);
+  REQUIRE(crater(common + c + " --jobs 1", "scan-c").status == 0);
+
+  const std::string runs = bytes_of(a + "/scan.csv"), aggregate = bytes_of(a + "/scan-aggregate.csv");
+  CHECK(runs == bytes_of(b + "/scan.csv"));
+  CHECK(runs == bytes_of(c + "/scan.csv"));
+  CHECK(aggregate == bytes_of(b + "/scan-aggregate.csv"));
+  CHECK(aggregate == bytes_of(c + "/scan-aggregate.csv"));
+
+  const std::vector<std::string> rows = lines_of(runs);
+  REQUIRE(rows.size() == 5);
+  CHECK(rows[0].rfind("value,x,seed,log,run_status,time,time_source,energy_fraction,count,depth,width,area", 0) == 0);
+  CHECK(rows[1].rfind("5,5,1,v0-s1.ede,reached stop.energy_fraction,", 0) == 0);
+  CHECK(rows[2].rfind("5,5,2,v0-s2.ede,", 0) == 0);
+  CHECK(rows[3].rfind("25,25,1,v1-s1.ede,", 0) == 0);
+  CHECK(rows[4].rfind("25,25,2,v1-s2.ede,", 0) == 0);
+  const std::vector<std::string> agg = lines_of(aggregate);
+  REQUIRE(agg.size() == 3);
+  CHECK(agg[1].rfind("5,5,2,", 0) == 0);
+
+  // Each run's numbers are exactly what measuring its log alone gives.
+  const ToolRun one = crater(a + "/v1-s2.ede", "scan-one");
+  REQUIRE(one.status == 0);
+  std::vector<std::string> f;
+  std::istringstream row(rows[4]);
+  for (std::string field; std::getline(row, field, ',');) f.push_back(field);
+  REQUIRE(f.size() > 8);
+  CHECK(contains(one.out, "measured at       t = " + f[5] + ", after"));
+  CHECK(contains(one.out, "displaced         " + f[8] + " of 200 bed disks"));
+  CHECK(std::filesystem::exists(a + "/v1-s2.txt"));
+}
+
+TEST_CASE("ede-crater scan: vector values, and runs that end before the energy fraction", "[tool][ede-crater]") {
+  const std::string dir = temp_path("crater-scan-xi");
+  const ToolRun r = crater("scan " + kScene + " --param species.projectile.velocity.vector --values '[0,-3],[0, -4]'" +
+                               kSmall + " --set species.bed.count=200 --set stop.time=0.1 -q --jobs 2 --out " + dir,
+                           "scan-vector");
+  INFO(r.out << r.err);
+  REQUIRE(r.status == 0);
+  CHECK(contains(r.out, "1 of 1 at the log's end, t = 0.1"));
+  const std::vector<std::string> rows = lines_of(bytes_of(dir + "/scan.csv"));
+  REQUIRE(rows.size() == 3);
+  CHECK(rows[1].rfind("\"[0,-3]\",3,1,v0-s1.ede,reached stop.time,0.10000000000000001,log_end,", 0) == 0);
+  CHECK(rows[2].rfind("\"[0, -4]\",4,1,", 0) == 0);  // the value as typed
+}
+
+TEST_CASE("ede-crater: bad input gives one clear message", "[tool][ede-crater]") {
+  const ToolRun missing = crater(temp_path("no-such-log.ede"), "missing");
+  CHECK(missing.status == 1);
+  CHECK(contains(missing.err, "ede-crater: error: cannot open"));
+
+  const std::string log = make_crater_log("crater-bad.ede", " --set species.bed.count=200");
+  const ToolRun species = crater(log + " --bed-species sand", "species");
+  CHECK(species.status == 1);
+  CHECK(contains(species.err, "there is no species 'sand' in the log; it has 'bed' (200 disks), 'projectile' (1 disk)"));
+
+  const ToolRun threshold = crater(log + " --threshold 5q", "threshold");
+  CHECK(threshold.status == 2);
+  CHECK(contains(threshold.err, "--threshold '5q' is not a length"));
+  const ToolRun late = crater(log + " --at 100", "late");
+  CHECK(late.status == 1);
+  CHECK(contains(late.err, "after the end of the log"));
+
+  const ToolRun key = crater("scan " + kScene + " --param species.projectile.mas --values 1,2 --out " +
+                                 temp_path("crater-scan-bad"),
+                             "key");
+  CHECK(key.status == 1);
+  CHECK(contains(key.err, "species[1].mas (species 'projectile'): unknown key; did you mean 'mass'?"));
+  CHECK_FALSE(std::filesystem::exists(temp_path("crater-scan-bad")));  // nothing ran
+  const ToolRun value = crater("scan " + kScene + " --param physics.restitution --values 0.5,2 --out " +
+                                   temp_path("crater-scan-bad"),
+                               "value");
+  CHECK(value.status == 1);
+  CHECK(contains(value.err, "physics.restitution: must be in [0, 1], got 2"));
+  const ToolRun empty = crater("scan " + kScene + " --param physics.restitution --values 0.5,,0.7", "empty");
+  CHECK(empty.status == 2);
+  CHECK(contains(empty.err, "empty value"));
+  const ToolRun metric = crater("scan " + kScene + " --param physics.restitution --values 0.5 --metric depht", "metric");
+  CHECK(metric.status == 2);
+}

@@ -1,0 +1,59 @@
+// The CSV files ede-crater writes: the surface profiles, the energy curve, the metric columns of a scan.
+//
+// Plain comma-separated tables with one header line, numbers with 17 significant digits (they read back to
+// the same double), so scripts and the plotting script need no special reader. Rejected: one file with
+// several tables separated by blank lines, which every CSV reader then has to be taught to split.
+#include <cerrno>
+#include <cstring>
+
+#include "crater_tool.hpp"
+
+namespace ede::crater_tool {
+
+const std::vector<std::string> kMetricNames = {"count",        "depth",      "width",         "area",
+                                               "depth_below_mean", "deepest_x", "removed_area", "raised_area",
+                                               "detached"};
+
+std::vector<double> metric_values(const CraterMeasurement& m) {
+  const CraterMetrics& c = m.report.metrics;
+  return {double(m.report.displaced.size()), c.depth,          c.width,       c.area,
+          c.depth_below_mean,              c.deepest_x,      c.removed_area, c.raised_area,
+          double(m.report.after.detached)};
+}
+
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string q = "\"";
+  for (const char c : text) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+Status write_text_file(const std::string& path, const std::string& text) {
+  std::FILE* f = std::fopen(path.c_str(), "w");
+  if (!f) return Error{"cannot write '" + path + "': " + std::strerror(errno)};
+  const bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+  if (std::fclose(f) != 0 || !written) return Error{"error while writing '" + path + "'"};
+  return Ok{};
+}
+
+Status write_profile_csv(const std::string& path, const CraterMeasurement& m) {
+  const CraterReport& r = m.report;
+  const double w = r.before.bin_width;
+  std::string s = "x_left,x_right,x,h_before,h_after,drop,in_crater,disks_before,disks_after\n";
+  for (std::size_t k = 0; k < r.before.height.size(); ++k) {
+    const bool in = r.metrics.has_crater && k >= r.metrics.first_bin && k <= r.metrics.last_bin;
+    s += exact(double(k) * w) + "," + exact(double(k + 1) * w) + "," + exact(r.before.centre(k)) + "," +
+         exact(r.before.height[k]) + "," + exact(r.after.height[k]) + "," +
+         exact(r.before.height[k] - r.after.height[k]) + "," + (in ? "1" : "0") + "," +
+         std::to_string(r.before.disks[k]) + "," + std::to_string(r.after.disks[k]) + "\n";
+  }
+  return write_text_file(path, s);
+}
+
+Status write_energy_csv(const std::string& path, const CraterMeasurement& m) {
+  std::string s = "t,energy_fraction\n";
+  for (std::size_t k = 0; k < m.energy.t.size(); ++k) s += exact(m.energy.t[k]) + "," + exact(m.energy.f[k]) + "\n";
+  return write_text_file(path, s);
+}
+
+}  // namespace ede::crater_tool

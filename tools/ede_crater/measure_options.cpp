@@ -1,0 +1,131 @@
+// The measuring options shared by `ede-crater LOG` and `ede-crater scan`, and the one function that
+// measures a log with them.
+//
+// Lengths are typed as "0.002" (box units) or "0.5r" (bed radii), so a default that scales with the grain
+// size and an absolute value read the same way on the command line. --at is parsed in the log's scalar type
+// (as ede-replay does), so --at 0.25 means exactly the value of T a run stopping at stop.time = 0.25 reaches.
+// Rejected: separate --threshold-radii options, which double every option for one unit.
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <memory>
+
+#include "crater_tool.hpp"
+#include "ede/log_reader.hpp"
+#include "scalar_dispatch.hpp"
+
+namespace ede::crater_tool {
+
+namespace {
+
+Result<CraterLength> parse_length(const std::string& text, const char* option) {
+  std::string number = text;
+  CraterLength l;
+  if (!number.empty() && (number.back() == 'r' || number.back() == 'R')) {
+    l.in_bed_radii = true;
+    number.pop_back();
+  }
+  char* end = nullptr;
+  errno = 0;
+  l.value = std::strtod(number.c_str(), &end);
+  if (number.empty() || end != number.c_str() + number.size() || !std::isfinite(l.value) || errno == ERANGE ||
+      l.value < 0)
+    return Error{std::string(option) + " '" + text +
+                 "' is not a length: give a number >= 0 in box units (0.002) or in bed radii (0.5r)"};
+  return l;
+}
+
+float parse_number(const char* s, char** end, float) { return std::strtof(s, end); }
+double parse_number(const char* s, char** end, double) { return std::strtod(s, end); }
+long double parse_number(const char* s, char** end, long double) { return std::strtold(s, end); }
+
+template <class T>
+Result<T> parse_time(const std::string& text) {
+  char* end = nullptr;
+  errno = 0;
+  const T v = parse_number(text.c_str(), &end, T{});
+  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(double(v)) || errno == ERANGE || v < T(0))
+    return Error{"--at '" + text + "' is not a time: give a number >= 0 (such as 0.25) or 'end'"};
+  return v;
+}
+
+}  // namespace
+
+std::string exact(double v) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%.17g", v);
+  return b;
+}
+
+std::string brief(double v) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%.6g", v);
+  return b;
+}
+
+void add_measure_options(CLI::App& app, MeasureOptions& o) {
+  auto* at = app.add_option("--at", o.at, "measure at this time (exact in the log's scalar type), or 'end'");
+  auto* fraction = app.add_option("--energy-fraction", o.energy_fraction,
+                                  "measure when this fraction of the initial kinetic energy remains "
+                                  "(default 0.1; the log's end if it never does)");
+  fraction->check(CLI::Range(0.0, 1.0));
+  at->excludes(fraction);
+  app.add_option("--bed-species", o.bed_species,
+                 "the bed's species (default: 'bed', else every species of more than one disk)");
+  app.add_option("--threshold", o.threshold,
+                 "displaced = moved by more than this; box units (0.002) or bed radii (0.5r; the default)");
+  app.add_option("--drop-threshold", o.drop_threshold,
+                 "the crater is where the surface fell by more than this (default 1r)");
+  app.add_option("--bin-width", o.bin_width, "width of the surface profile's bins (default 2r)");
+  app.add_option("--link-gap", o.link_gap,
+                 "bed disks whose rims are at most this far apart are linked (default 2r); disks not linked "
+                 "to the bed's bottom are ejecta and do not make the surface");
+  app.add_flag("--keep-detached", o.keep_detached, "every bed disk makes the surface, ejecta too");
+  app.add_option("--curve-points", o.points, "points of the energy curve (default 501)")->check(CLI::Range(2, 1000000));
+}
+
+Result<CraterSettings> settings_from(const MeasureOptions& o) {
+  CraterSettings s;
+  const std::pair<const std::string*, std::pair<CraterLength*, const char*>> lengths[] = {
+      {&o.threshold, {&s.displacement_threshold, "--threshold"}},
+      {&o.drop_threshold, {&s.drop_threshold, "--drop-threshold"}},
+      {&o.bin_width, {&s.bin_width, "--bin-width"}},
+      {&o.link_gap, {&s.link_gap, "--link-gap"}},
+  };
+  for (const auto& [text, target] : lengths) {
+    auto l = parse_length(*text, target.second);
+    if (!l) return l.error();
+    *target.first = l.value();
+  }
+  if (s.bin_width.value == 0) return Error{"--bin-width must be > 0"};
+  s.exclude_detached = !o.keep_detached;
+  return s;
+}
+
+Result<MeasuredLog> measure_log(const std::string& path, const MeasureOptions& o) {
+  auto settings = settings_from(o);
+  if (!settings) return settings.error();
+  auto log = LogReader::open(path);
+  if (!log) return log.error();
+  std::shared_ptr<const LogReader> reader = log.value();
+  auto crater = tools::with_scalar(reader->header().scalar, [&]<class T>() -> Result<CraterMeasurement> {
+    CraterRequest<T> req;
+    req.energy_fraction = o.energy_fraction;
+    req.bed_species = o.bed_species;
+    req.settings = settings.value();
+    req.curve_points = o.points;
+    req.at_end = o.at == "end";
+    if (!o.at.empty() && !req.at_end) {
+      auto t = parse_time<T>(o.at);
+      if (!t) return t.error();
+      req.at = t.value();
+    }
+    return measure_crater<T>(reader, req);
+  });
+  if (!crater) return crater.error();
+  MeasuredLog m{std::move(crater).value(), {}, reader->header().disks, to_string(reader->header().scalar)};
+  m.run_status = reader->complete() ? reader->final_status() : "incomplete: " + reader->incomplete_reason();
+  return m;
+}
+
+}  // namespace ede::crater_tool
