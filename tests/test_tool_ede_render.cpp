@@ -1,0 +1,330 @@
+// ede-render as a user runs it: pictures of tiny hand-made logs checked pixel by pixel, SVG paths counted,
+// periodic images, movies (PNG frames, MP4 when ffmpeg is installed, a warning when it is not), and clear
+// errors on bad input.
+//
+// Logs come from ede-sim on small scenes with explicit positions and velocities, so every disk's place at
+// the drawn time is known. PNGs are read back with cairo itself. The test binary does not link cairo (only
+// ede-render does), so its few functions are looked up at run time with dlopen from libcairo.so.2, the
+// library ede-render is linked against.
+#include <dlfcn.h>
+#include <unistd.h>
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "log_test_support.hpp"
+#include "tool_runner.hpp"
+
+using namespace ede::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Reading a PNG with cairo, loaded at run time.
+class Png {
+ public:
+  explicit Png(const std::string& path) {
+    static void* lib = ::dlopen("libcairo.so.2", RTLD_NOW);
+    REQUIRE(lib != nullptr);
+    const auto fn = [](const char* name) {
+      void* f = ::dlsym(lib, name);
+      REQUIRE(f != nullptr);
+      return f;
+    };
+    using Create = void* (*)(const char*);
+    using Status = int (*)(void*);
+    using Int = int (*)(void*);
+    using Data = unsigned char* (*)(void*);
+    destroy_ = reinterpret_cast<void (*)(void*)>(fn("cairo_surface_destroy"));
+    surface_ = reinterpret_cast<Create>(fn("cairo_image_surface_create_from_png"))(path.c_str());
+    INFO(path);
+    REQUIRE(reinterpret_cast<Status>(fn("cairo_surface_status"))(surface_) == 0);
+    width_ = reinterpret_cast<Int>(fn("cairo_image_surface_get_width"))(surface_);
+    height_ = reinterpret_cast<Int>(fn("cairo_image_surface_get_height"))(surface_);
+    stride_ = reinterpret_cast<Int>(fn("cairo_image_surface_get_stride"))(surface_);
+    data_ = reinterpret_cast<Data>(fn("cairo_image_surface_get_data"))(surface_);
+  }
+  ~Png() {
+    if (surface_) destroy_(surface_);
+  }
+  Png(const Png&) = delete;
+  Png& operator=(const Png&) = delete;
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  // 0xRRGGBB at pixel (px, py) (cairo's RGB24 and ARGB32 pixels are native-endian 32-bit words).
+  unsigned rgb(int px, int py) const {
+    REQUIRE(px >= 0);
+    REQUIRE(py >= 0);
+    REQUIRE(px < width_);
+    REQUIRE(py < height_);
+    std::uint32_t v;
+    std::memcpy(&v, data_ + std::size_t(py) * std::size_t(stride_) + std::size_t(px) * 4, 4);
+    return v & 0xFFFFFF;
+  }
+
+ private:
+  void* surface_ = nullptr;
+  void (*destroy_)(void*) = nullptr;
+  int width_ = 0, height_ = 0, stride_ = 0;
+  unsigned char* data_ = nullptr;
+};
+
+// The palette the docs name (docs/pictures.md).
+constexpr unsigned kFirstSpecies = 0x0072B2, kSecondSpecies = 0xE69F00;
+constexpr unsigned kSlow = 0x0072B2, kFast = 0xD55E00, kBackground = 0xFFFFFF;
+constexpr unsigned kNotMoved = 0xFFFFCC, kMarked = 0x0072B2;
+
+// A 2 x 1 box with walls: two "bed" disks (r = 0.1) at rest at (0.4, 0.3) and (0.8, 0.3), one "ball"
+// (r = 0.15) from (1.5, 0.6) at velocity (-0.2, 0): at t = 1 it is at (1.3, 0.6). No collision.
+const char* const kTinyScene = R"([box]
+size = [2.0, 1.0]
+[[species]]
+name = "bed"
+radius = 0.1
+[species.placement]
+kind = "explicit"
+positions = [[0.4, 0.3], [0.8, 0.3]]
+[[species]]
+name = "ball"
+radius = 0.15
+[species.placement]
+kind = "explicit"
+positions = [[1.5, 0.6]]
+[species.velocity]
+kind = "list"
+values = [[-0.2, 0.0]]
+[stop]
+time = 1.0
+)";
+
+// A periodic unit box: one disk (r = 0.1) at rest across the left edge at (0.02, 0.5), one at the centre.
+const char* const kWrapScene = R"([box]
+size = [1.0, 1.0]
+boundary = "periodic"
+[[species]]
+name = "gas"
+radius = 0.1
+[species.placement]
+kind = "explicit"
+positions = [[0.02, 0.5], [0.5, 0.5]]
+[stop]
+time = 1.0
+)";
+
+std::string make_log(const std::string& name, const char* scene_text) {
+  const std::string scene = temp_path("render-" + name + ".toml"), log = temp_path("render-" + name + ".ede");
+  std::ofstream(scene) << scene_text;
+  const ToolRun r = run_tool("ede-sim", scene + " -q -o " + log, "render-sim-" + name);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  return log;
+}
+
+ToolRun render(const std::string& args, const std::string& tag) { return run_tool("ede-render", args, "render-" + tag); }
+
+// Pixel of a simulation point in an image of a box of height ly at `scale` pixels per unit.
+std::pair<int, int> pixel(double x, double y, double scale, double ly) {
+  return {int(std::floor(x * scale)), int(std::floor((ly - y) * scale))};
+}
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+// cairo's SVG spelling of an 8-bit colour, as in style="fill:rgb(0%,44.705882%,69.803922%)": percentages
+// printed with six decimals, trailing zeros dropped.
+std::string svg_fill(unsigned rgb) {
+  const auto pct = [](unsigned c) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%f", c * 100.0 / 255.0);
+    std::string s = b;
+    s.erase(s.find_last_not_of('0') + 1);
+    if (s.back() == '.') s.pop_back();
+    return s + "%";
+  };
+  return "fill:rgb(" + pct(rgb >> 16) + "," + pct((rgb >> 8) & 255) + "," + pct(rgb & 255) + ")";
+}
+
+bool have_ffmpeg() {
+  const char* path = std::getenv("PATH");
+  if (!path) return false;
+  std::string dirs = path;
+  for (std::size_t start = 0; start <= dirs.size();) {
+    std::size_t end = dirs.find(':', start);
+    if (end == std::string::npos) end = dirs.size();
+    if (::access((dirs.substr(start, end - start) + "/ffmpeg").c_str(), X_OK) == 0) return true;
+    start = end + 1;
+  }
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("ede-render draws each disk in its species' colour at its place, to scale", "[tool][ede-render]") {
+  const std::string log = make_log("species", kTinyScene);
+  const std::string png = temp_path("render-species.png");
+  const ToolRun r = render(log + " --at 1 --width 400 --no-legend -o " + png, "species");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const Png image(png);
+  CHECK(image.width() == 400);
+  CHECK(image.height() == 200);  // the 2 x 1 box at 200 pixels per unit
+  const double scale = 200;
+  const auto at = [&](double x, double y) {
+    const auto [px, py] = pixel(x, y, scale, 1.0);
+    return image.rgb(px, py);
+  };
+  CHECK(at(0.4, 0.3) == kFirstSpecies);
+  CHECK(at(0.8, 0.3) == kFirstSpecies);
+  CHECK(at(1.3, 0.6) == kSecondSpecies);  // the ball moved from x = 1.5 (and is marked: outline at its edge)
+  CHECK(at(1.5, 0.6) == kBackground);     // where it started
+  CHECK(at(1.0, 0.15) == kBackground);
+  CHECK(at(0.4 + 0.085, 0.3) == kFirstSpecies);  // radius 0.1 = 20 pixels: inside at 17, outside at 22
+  CHECK(at(0.4 + 0.11, 0.3) == kBackground);
+}
+
+TEST_CASE("ede-render --width sets the image size and the box sets its aspect", "[tool][ede-render]") {
+  const std::string log = make_log("size", kTinyScene);
+  for (int width : {100, 333, 1000}) {
+    const std::string png = temp_path("render-size-" + std::to_string(width) + ".png");
+    const ToolRun r = render(log + " --at end --width " + std::to_string(width) + " -o " + png, "size");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const Png image(png);
+    CHECK(image.width() == width);
+    CHECK(image.height() == int(std::lround(width / 2.0)));
+  }
+}
+
+TEST_CASE("ede-render --color speed puts slow and fast disks in their classes' colours", "[tool][ede-render]") {
+  // Initial mean speed (0 + 0 + 0.2) / 3 = 0.067: the ball (0.2 > 1.5 x 0.067) is fast, the bed at rest slow.
+  const std::string log = make_log("speed", kTinyScene);
+  const std::string png = temp_path("render-speed.png");
+  const ToolRun r = render(log + " --at 1 --width 400 --color speed -o " + png, "speed");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const Png image(png);
+  CHECK(image.rgb(260, 80) == kFast);  // (1.3, 0.6)
+  CHECK(image.rgb(80, 140) == kSlow);  // (0.4, 0.3)
+  CHECK(image.rgb(160, 140) == kSlow);
+}
+
+TEST_CASE("ede-render --color displacement: resting disks at the map's bottom, the projectile apart",
+          "[tool][ede-render]") {
+  const std::string log = make_log("displacement", kTinyScene);
+  const std::string png = temp_path("render-displacement.png");
+  const ToolRun r = render(log + " --at 1 --width 400 --color displacement -o " + png, "displacement");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const Png image(png);
+  CHECK(image.rgb(80, 140) == kNotMoved);  // the bed at rest
+  CHECK(image.rgb(160, 140) == kNotMoved);
+  CHECK(image.rgb(260, 80) == kMarked);    // the ball, a one-disk species: marked, blue
+}
+
+TEST_CASE("ede-render writes SVG with one path per disk", "[tool][ede-render]") {
+  const std::string log = make_log("svg", kTinyScene);
+  const std::string svg = temp_path("render.svg");
+  const ToolRun r = render(log + " --at 1 --no-legend -o " + svg, "svg");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const std::string text = read_file(svg);
+  REQUIRE(text.find("<svg") != std::string::npos);
+  INFO(svg_fill(kFirstSpecies));
+  CHECK(count(text, svg_fill(kFirstSpecies)) == 2);   // the two bed disks
+  CHECK(count(text, svg_fill(kSecondSpecies)) == 1);  // the ball
+}
+
+TEST_CASE("ede-render draws a disk across a periodic edge on both sides", "[tool][ede-render]") {
+  const std::string log = make_log("wrap", kWrapScene);
+  const std::string png = temp_path("render-wrap.png");
+  const ToolRun r = render(log + " --at end --width 200 --no-legend -o " + png, "wrap");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const Png image(png);
+  // Centre (0.02, 0.5) = pixel (4, 100), radius 20 pixels: the right edge shows x in [0.92, 1).
+  CHECK(image.rgb(10, 100) == kFirstSpecies);
+  CHECK(image.rgb(194, 100) == kFirstSpecies);
+  CHECK(image.rgb(175, 100) == kBackground);
+  CHECK(image.rgb(194, 60) == kBackground);
+  CHECK(image.rgb(100, 100) == kFirstSpecies);
+}
+
+TEST_CASE("ede-render makes movies: PNG frames, MP4 with ffmpeg", "[tool][ede-render]") {
+  const std::string log = make_log("movie", kTinyScene);
+  const std::string dir = temp_path("render-frames");
+  fs::remove_all(dir);
+  const ToolRun r = render(log + " --from 0 --to 1 --frames 3 --width 200 --no-legend -o " + dir, "movie");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  for (const char* frame : {"frame_00000.png", "frame_00001.png", "frame_00002.png"}) {
+    INFO(frame);
+    CHECK(fs::file_size(fs::path(dir) / frame) > 0);
+  }
+  CHECK_FALSE(fs::exists(fs::path(dir) / "frame_00003.png"));
+  {  // the ball at t = 0.5 is at x = 1.4: pixel (140, 40) at 100 pixels per unit
+    const Png middle((fs::path(dir) / "frame_00001.png").string());
+    CHECK(middle.rgb(140, 40) == kSecondSpecies);
+  }
+  fs::remove_all(dir);
+
+  if (!have_ffmpeg()) {
+    WARN("ffmpeg is not installed: the MP4 is not checked");
+    return;
+  }
+  const std::string mp4 = temp_path("render-movie.mp4");
+  const ToolRun v = render(log + " --frames 3 --fps 5 --width 101 -o " + mp4, "mp4");  // odd width: padded
+  INFO(v.err);
+  REQUIRE(v.status == 0);
+  CHECK(fs::file_size(mp4) > 0);
+}
+
+TEST_CASE("ede-render keeps the frames with a warning when ffmpeg is missing", "[tool][ede-render]") {
+  const std::string log = make_log("noffmpeg", kTinyScene);
+  const std::string mp4 = temp_path("render-noffmpeg.mp4"), frames = temp_path("render-noffmpeg_frames");
+  fs::remove_all(frames);
+  const std::string err = temp_path("render-noffmpeg.err");
+  const std::string cmd = "PATH=/nonexistent " + tool_path("ede-render") + " " + log + " --frames 2 --width 100 -o " +
+                          mp4 + " >/dev/null 2>" + err;
+  const int raw = std::system(cmd.c_str());
+  REQUIRE(WIFEXITED(raw));
+  CHECK(WEXITSTATUS(raw) == 0);
+  CHECK(read_file(err).find("ffmpeg is not installed") != std::string::npos);
+  CHECK(fs::exists(fs::path(frames) / "frame_00001.png"));
+  CHECK_FALSE(fs::exists(mp4));
+  fs::remove_all(frames);
+}
+
+TEST_CASE("ede-render rejects bad input with a clear message and a non-zero exit", "[tool][ede-render]") {
+  const std::string log = make_log("bad", kTinyScene), png = temp_path("render-bad.png");
+  struct Case {
+    std::string args, message;
+  };
+  const Case cases[] = {
+      {temp_path("no-such-log.ede") + " --at 0 -o " + png, "no-such-log.ede"},
+      {log + " --at 2 -o " + png, "after the end of the log"},
+      {log + " --at soon -o " + png, "is not a number"},
+      {log + " --at 1 --mark-species comet -o " + png, "no such species"},
+      {log + " --at 1 -o " + temp_path("render-bad.jpg"), ".png or .svg"},
+      {log + " -o " + png, "give --at"},
+      {log + " --at 1 --frames 3 -o " + temp_path("render-bad-dir"), "not both"},
+      {log + " --frames 3 -o " + png, "directory of PNG frames or to an .mp4"},
+      {log + " --at 1 --color rainbow -o " + png, "rainbow"},
+      {log + " --at 1 -o " + temp_path("no-such-dir") + "/x.png", "cannot write"},
+  };
+  for (const Case& c : cases) {
+    const ToolRun r = render(c.args, "bad");
+    INFO(c.args << "\n" << r.err);
+    CHECK(r.status != 0);
+    CHECK(r.err.find(c.message) != std::string::npos);
+  }
+}

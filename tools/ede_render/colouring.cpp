@@ -1,0 +1,168 @@
+// Colours, marks and legends; see colouring.hpp.
+#include "colouring.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+
+namespace ede::render {
+
+namespace {
+
+std::string number(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3g", v);
+  return b;
+}
+
+std::string species_name(const Frame& f, int s) {
+  return s >= 0 && std::size_t(s) < f.species_names.size() ? f.species_names[std::size_t(s)] : std::to_string(s);
+}
+
+std::vector<std::size_t> species_counts(const Frame& f) {
+  std::vector<std::size_t> n(f.species_names.size(), 0);
+  for (int s : f.species) {
+    if (s < 0) continue;
+    if (std::size_t(s) >= n.size()) n.resize(std::size_t(s) + 1, 0);
+    ++n[std::size_t(s)];
+  }
+  return n;
+}
+
+// The legend line of the marked disks, "projectile (marked)", with a swatch of their fill.
+void add_marked_entry(const Frame& f, const std::vector<bool>& marked, const Rgb& swatch, Colouring& c) {
+  std::vector<int> shown;
+  for (std::size_t i = 0; i < f.size(); ++i)
+    if (marked[i] && std::find(shown.begin(), shown.end(), f.species[i]) == shown.end())
+      shown.push_back(f.species[i]);
+  if (shown.empty()) return;
+  std::string names;
+  for (int s : shown) names += (names.empty() ? "" : ", ") + species_name(f, s);
+  c.legend.push_back({swatch, names + " (marked)", LegendEntry::Swatch::Ring});
+}
+
+// Species: one line per species, the marked ones with the outline in their swatch.
+void by_species(const Frame& f, const std::vector<bool>& marked, Colouring& c) {
+  for (int s : f.species) c.fill.push_back(species_colour(std::size_t(std::max(s, 0))));
+  const std::vector<std::size_t> n = species_counts(f);
+  std::vector<bool> species_marked(n.size(), false);
+  for (std::size_t i = 0; i < f.size(); ++i)
+    if (marked[i] && f.species[i] >= 0) species_marked[std::size_t(f.species[i])] = true;
+  for (std::size_t s = 0; s < n.size(); ++s) {
+    if (n[s] == 0) continue;
+    const std::string count = std::to_string(n[s]) + (species_marked[s] ? ", marked" : "");
+    c.legend.push_back({species_colour(s), species_name(f, int(s)) + " (" + count + ")",
+                        species_marked[s] ? LegendEntry::Swatch::Ring : LegendEntry::Swatch::Disk});
+  }
+}
+
+void by_speed(const Frame& f, Colouring& c) {
+  std::array<std::size_t, 3> n{};
+  for (double v : f.speed) {
+    const SpeedClass k = speed_class(v, f.initial_mean_speed);
+    c.fill.push_back(speed_colour(k));
+    ++n[std::size_t(k)];
+  }
+  const char* const names[] = {"slow  v < 0.5 v\u0304\u2080", "medium", "fast  v > 1.5 v\u0304\u2080"};
+  for (std::size_t k = 0; k < 3; ++k)
+    c.legend.push_back({speed_colour(SpeedClass(k)), std::string(names[k]) + "  (" + std::to_string(n[k]) + ")"});
+  c.legend.push_back({Rgb{}, "v\u0304\u2080 = " + number(f.initial_mean_speed) + " (initial mean speed)",
+                      LegendEntry::Swatch::None});
+}
+
+// Displacement: marked disks (a projectile, which moves farthest) get a colour outside the map.
+void by_displacement(const Frame& f, const std::vector<bool>& marked, double max, Colouring& c) {
+  for (std::size_t i = 0; i < f.size(); ++i)
+    c.fill.push_back(marked[i] ? marked_colour() : displacement_colour(f.displacement[i] / max));
+  c.bar = ColourBar{max, "displacement from t = 0 [L]"};
+  add_marked_entry(f, marked, marked_colour(), c);
+}
+
+}  // namespace
+
+Rgb species_colour(std::size_t species) {
+  static const unsigned palette[] = {0x0072B2, 0xE69F00, 0x009E73, 0xCC79A7, 0x56B4E9, 0xD55E00, 0xF0E442, 0x000000};
+  return Rgb::hex(palette[species % 8]);
+}
+
+Rgb marked_colour() { return Rgb::hex(0x0072B2); }
+
+Rgb speed_colour(SpeedClass c) {
+  switch (c) {
+    case SpeedClass::Slow: return Rgb::hex(0x0072B2);
+    case SpeedClass::Medium: return Rgb::hex(0x009E73);
+    case SpeedClass::Fast: break;
+  }
+  return Rgb::hex(0xD55E00);
+}
+
+SpeedClass speed_class(double speed, double initial_mean_speed) {
+  if (speed < 0.5 * initial_mean_speed) return SpeedClass::Slow;
+  if (speed > 1.5 * initial_mean_speed) return SpeedClass::Fast;
+  return SpeedClass::Medium;
+}
+
+Rgb displacement_colour(double u) {
+  static const unsigned stops[] = {0xFFFFCC, 0xFFEDA0, 0xFED976, 0xFEB24C, 0xFD8D3C,
+                                   0xFC4E2A, 0xE31A1C, 0xBD0026, 0x800026};
+  constexpr int last = int(sizeof stops / sizeof stops[0]) - 1;
+  const double x = std::clamp(std::isfinite(u) ? u : 1.0, 0.0, 1.0) * last;
+  const int k = std::min(int(x), last - 1);
+  const double w = x - k;
+  const Rgb a = Rgb::hex(stops[k]), b = Rgb::hex(stops[k + 1]);
+  return {a.r + (b.r - a.r) * w, a.g + (b.g - a.g) * w, a.b + (b.b - a.b) * w};
+}
+
+Result<std::vector<bool>> marked_disks(const Frame& f, const std::vector<std::string>& names) {
+  std::vector<int> chosen;
+  for (const std::string& name : names) {
+    const auto it = std::find(f.species_names.begin(), f.species_names.end(), name);
+    if (it == f.species_names.end()) {
+      std::string known;
+      for (const std::string& s : f.species_names) known += (known.empty() ? "'" : ", '") + s + "'";
+      return Error{"--mark-species '" + name + "': no such species in the log (it has " + known + ")"};
+    }
+    chosen.push_back(int(it - f.species_names.begin()));
+  }
+  if (names.empty()) {
+    const std::vector<std::size_t> n = species_counts(f);
+    const bool all_single = std::all_of(n.begin(), n.end(), [](std::size_t k) { return k == 1; });
+    for (std::size_t s = 0; s < n.size() && !all_single; ++s)
+      if (n[s] == 1) chosen.push_back(int(s));
+  }
+  std::vector<bool> marked(f.size(), false);
+  for (std::size_t i = 0; i < f.size(); ++i)
+    marked[i] = std::find(chosen.begin(), chosen.end(), f.species[i]) != chosen.end();
+  return marked;
+}
+
+double displacement_scale(const Frame& f, const std::vector<bool>& marked) {
+  std::vector<double> d;
+  double radius_sum = 0;
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    if (!marked[i]) d.push_back(f.displacement[i]);
+    radius_sum += f.r[i];
+  }
+  if (!d.empty()) {
+    const std::size_t k = std::size_t(std::ceil(0.95 * double(d.size()))) - 1;
+    std::nth_element(d.begin(), d.begin() + std::ptrdiff_t(k), d.end());
+    if (d[k] > 0) return d[k];
+  }
+  return f.size() ? radius_sum / double(f.size()) : 1.0;
+}
+
+Colouring colour_disks(const Frame& f, ColourBy by, const std::vector<bool>& marked, double max_displacement) {
+  Colouring c;
+  switch (by) {
+    case ColourBy::Species: by_species(f, marked, c); break;
+    case ColourBy::Speed:
+      by_speed(f, c);
+      add_marked_entry(f, marked, Rgb{0.85, 0.85, 0.85}, c);
+      break;
+    case ColourBy::Displacement: by_displacement(f, marked, max_displacement, c); break;
+  }
+  return c;
+}
+
+}  // namespace ede::render
