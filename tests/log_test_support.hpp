@@ -1,7 +1,6 @@
-// Helpers for log tests: run an engine with a LogWriter (and a Recorder) in-process.
+// Helpers for log tests: run an engine with a LogWriter (and a Recorder) in-process; scratch files are
+// temp_path's (tool_runner.hpp).
 #pragma once
-
-#include <unistd.h>
 
 #include <cstdio>
 #include <memory>
@@ -11,13 +10,9 @@
 #include "ede/log_writer.hpp"
 #include "ede/replay.hpp"
 #include "engine_test_support.hpp"
+#include "tool_runner.hpp"  // temp_path
 
 namespace ede::test {
-
-// Unique per process: ctest runs test cases in parallel processes, which must not share scratch files.
-inline std::string temp_path(const std::string& name) {
-  return std::string(EDE_BINARY_DIR) + "/tests/" + std::to_string(::getpid()) + "-" + name;
-}
 
 template <class T>
 struct LoggedRun {

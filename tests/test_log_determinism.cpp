@@ -9,7 +9,6 @@
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <fstream>
-#include <iterator>
 #include <thread>
 
 #include "ede/log_digest.hpp"
@@ -22,11 +21,6 @@ using namespace ede;
 using namespace ede::test;
 
 namespace {
-
-std::string file_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 // A small inelastic mixture with walls, TC, samples and a reverse action: many code paths in 20 k events.
 const char* kPinnedScene = R"(seed = 7
@@ -85,7 +79,7 @@ std::string run_pinned_scene(const std::string& file) {
 
 TEST_CASE("the same scene and seed give the same log, byte for byte", "[log][determinism]") {
   const std::string a = run_pinned_scene("same-a.ede"), b = run_pinned_scene("same-b.ede");
-  CHECK(file_bytes(a) == file_bytes(b));
+  CHECK(read_file(a) == read_file(b));
 }
 
 TEST_CASE("the pinned content digest of a small run has not changed", "[log][determinism]") {
@@ -105,7 +99,7 @@ TEST_CASE("a run killed with SIGKILL leaves a readable log; --resume completes i
                           "[[species]]\nname = \"gas\"\ncount = 3000\n[species.placement]\npacking_fraction = 0.4\n"
                           "[species.velocity]\nkind = \"speed\"\nspeed = 1.0\n[stop]\nevents = 2500000\n";
   const std::string whole = temp_path("kill-whole.ede"), killed = temp_path("kill-killed.ede");
-  REQUIRE(run_tool("ede-sim", scene + " -q -o " + whole, "kill-whole").status == 0);
+  sim_log(scene, "", whole, "kill-whole");
   std::remove(killed.c_str());
 
   const pid_t pid = fork();
@@ -141,5 +135,5 @@ TEST_CASE("a run killed with SIGKILL leaves a readable log; --resume completes i
   const ToolRun resumed = run_tool("ede-sim", "--resume " + killed + " -q", "kill-resume");
   INFO(resumed.err);
   REQUIRE(resumed.status == 0);
-  CHECK(file_bytes(killed) == file_bytes(whole));
+  CHECK(read_file(killed) == read_file(whole));
 }

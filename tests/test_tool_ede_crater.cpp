@@ -5,13 +5,10 @@
 // and a projectile of radius 0.07 (5 bed radii), which run in well under a second.
 #include <catch2/catch.hpp>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include "log_test_support.hpp"
 #include "tool_runner.hpp"
 
 using namespace ede::test;
@@ -22,26 +19,10 @@ const std::string kScene = source_path("examples/crater.toml");
 const std::string kSmall = " --set species.projectile.radius=0.07";
 
 std::string make_crater_log(const std::string& name, const std::string& options) {
-  const std::string log = temp_path(name);
-  const ToolRun r = run_tool("ede-sim", kScene + " -q" + kSmall + options + " -o " + log, "crater-sim-" + name);
-  INFO(r.err);
-  REQUIRE(r.status == 0);
-  return log;
+  return sim_log(kScene, kSmall + options, temp_path(name), "crater-sim-" + name);
 }
 
 ToolRun crater(const std::string& args, const std::string& tag) { return run_tool("ede-crater", args, "crater-" + tag); }
-
-std::string bytes_of(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) out.push_back(line);
-  return out;
-}
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
@@ -58,18 +39,18 @@ TEST_CASE("ede-crater: measures a small crater log, writes the profiles, the ene
                            "depth             ", "width             ", "area              ", "displaced         "})
     CHECK(contains(r.out, line));
 
-  const std::vector<std::string> profile = lines_of(bytes_of(csv));
+  const std::vector<std::string> profile = lines(read_file(csv));
   REQUIRE(profile.size() == 36);  // header + 35 bins: 1 / (2 x 0.0141) = 35.4
   CHECK(profile[0] == "x_left,x_right,x,h_before,h_after,drop,in_crater,disks_before,disks_after");
   std::size_t in_crater = 0;
   for (std::size_t k = 1; k < profile.size(); ++k) in_crater += contains(profile[k], ",1,") ? 1 : 0;
   CHECK(in_crater > 0);
   const std::string energy = temp_path("crater-small-energy.csv");
-  const std::vector<std::string> curve = lines_of(bytes_of(energy));
+  const std::vector<std::string> curve = lines(read_file(energy));
   REQUIRE(curve.size() == 502);
   CHECK(curve[0] == "t,energy_fraction");
   CHECK(curve[1] == "0,1");
-  CHECK(bytes_of(png).substr(1, 3) == "PNG");
+  CHECK(read_file(png).substr(1, 3) == "PNG");
 }
 
 TEST_CASE("ede-crater: the time of the measurement: energy fraction, --at, --at end, never reached",
@@ -102,20 +83,20 @@ TEST_CASE("ede-crater scan: deterministic CSV, the same for --jobs 1 and 2", "[t
   REQUIRE(crater(common + b + " --jobs 2", "scan-b").status == 0);
   REQUIRE(crater(common + c + " --jobs 1", "scan-c").status == 0);
 
-  const std::string runs = bytes_of(a + "/scan.csv"), aggregate = bytes_of(a + "/scan-aggregate.csv");
-  CHECK(runs == bytes_of(b + "/scan.csv"));
-  CHECK(runs == bytes_of(c + "/scan.csv"));
-  CHECK(aggregate == bytes_of(b + "/scan-aggregate.csv"));
-  CHECK(aggregate == bytes_of(c + "/scan-aggregate.csv"));
+  const std::string runs = read_file(a + "/scan.csv"), aggregate = read_file(a + "/scan-aggregate.csv");
+  CHECK(runs == read_file(b + "/scan.csv"));
+  CHECK(runs == read_file(c + "/scan.csv"));
+  CHECK(aggregate == read_file(b + "/scan-aggregate.csv"));
+  CHECK(aggregate == read_file(c + "/scan-aggregate.csv"));
 
-  const std::vector<std::string> rows = lines_of(runs);
+  const std::vector<std::string> rows = lines(runs);
   REQUIRE(rows.size() == 5);
   CHECK(rows[0].rfind("value,x,seed,log,run_status,time,time_source,energy_fraction,count,depth,width,area", 0) == 0);
   CHECK(rows[1].rfind("5,5,1,v0-s1.ede,reached stop.energy_fraction,", 0) == 0);
   CHECK(rows[2].rfind("5,5,2,v0-s2.ede,", 0) == 0);
   CHECK(rows[3].rfind("25,25,1,v1-s1.ede,", 0) == 0);
   CHECK(rows[4].rfind("25,25,2,v1-s2.ede,", 0) == 0);
-  const std::vector<std::string> agg = lines_of(aggregate);
+  const std::vector<std::string> agg = lines(aggregate);
   REQUIRE(agg.size() == 3);
   CHECK(agg[1].rfind("5,5,2,", 0) == 0);
 
@@ -139,7 +120,7 @@ TEST_CASE("ede-crater scan: vector values, and runs that end before the energy f
   INFO(r.out << r.err);
   REQUIRE(r.status == 0);
   CHECK(contains(r.out, "1 of 1 at the log's end, t = 0.1"));
-  const std::vector<std::string> rows = lines_of(bytes_of(dir + "/scan.csv"));
+  const std::vector<std::string> rows = lines(read_file(dir + "/scan.csv"));
   REQUIRE(rows.size() == 3);
   CHECK(rows[1].rfind("\"[0,-3]\",3,1,v0-s1.ede,reached stop.time,0.10000000000000001,log_end,", 0) == 0);
   CHECK(rows[2].rfind("\"[0, -4]\",4,1,", 0) == 0);  // the value as typed
@@ -178,4 +159,17 @@ TEST_CASE("ede-crater: bad input gives one clear message", "[tool][ede-crater]")
   CHECK(contains(empty.err, "empty value"));
   const ToolRun metric = crater("scan " + kScene + " --param physics.restitution --values 0.5 --metric depht", "metric");
   CHECK(metric.status == 2);
+}
+
+TEST_CASE("ede-crater: a bad command line exits with status 2 and CLI11's message, --help with 0",
+          "[tool][ede-crater]") {
+  const std::string log = temp_path("crater-any.ede");
+  const ToolRun flag = crater(log + " --no-such-flag", "bad-flag");
+  CHECK(flag.status == 2);
+  CHECK(contains(flag.err, "--no-such-flag"));
+  CHECK(crater("scan " + kScene + " --no-such-flag", "bad-scan-flag").status == 2);
+  CHECK(crater(log + " --energy-fraction 2", "bad-fraction").status == 2);
+  CHECK(crater("", "nothing").status == 2);
+  CHECK(crater("--help", "help").status == 0);
+  CHECK(crater("scan --help", "help-scan").status == 0);
 }

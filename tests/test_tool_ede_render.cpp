@@ -3,10 +3,8 @@
 // errors on bad input.
 //
 // Logs come from ede-sim on small scenes with explicit positions and velocities, so every disk's place at
-// the drawn time is known. PNGs are read back with cairo itself. The test binary does not link cairo (only
-// ede-render does), so its few functions are looked up at run time with dlopen from libcairo.so.2, the
-// library ede-render is linked against.
-#include <dlfcn.h>
+// the drawn time is known. PNGs are read back with cairo itself, the library ede-render draws with.
+#include <cairo.h>
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
@@ -18,7 +16,6 @@
 #include <fstream>
 #include <string>
 
-#include "log_test_support.hpp"
 #include "tool_runner.hpp"
 
 using namespace ede::test;
@@ -26,54 +23,34 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Reading a PNG with cairo, loaded at run time.
+// A PNG read back with cairo.
 class Png {
  public:
-  explicit Png(const std::string& path) {
-    static void* lib = ::dlopen("libcairo.so.2", RTLD_NOW);
-    REQUIRE(lib != nullptr);
-    const auto fn = [](const char* name) {
-      void* f = ::dlsym(lib, name);
-      REQUIRE(f != nullptr);
-      return f;
-    };
-    using Create = void* (*)(const char*);
-    using Status = int (*)(void*);
-    using Int = int (*)(void*);
-    using Data = unsigned char* (*)(void*);
-    destroy_ = reinterpret_cast<void (*)(void*)>(fn("cairo_surface_destroy"));
-    surface_ = reinterpret_cast<Create>(fn("cairo_image_surface_create_from_png"))(path.c_str());
+  explicit Png(const std::string& path) : surface_(cairo_image_surface_create_from_png(path.c_str())) {
     INFO(path);
-    REQUIRE(reinterpret_cast<Status>(fn("cairo_surface_status"))(surface_) == 0);
-    width_ = reinterpret_cast<Int>(fn("cairo_image_surface_get_width"))(surface_);
-    height_ = reinterpret_cast<Int>(fn("cairo_image_surface_get_height"))(surface_);
-    stride_ = reinterpret_cast<Int>(fn("cairo_image_surface_get_stride"))(surface_);
-    data_ = reinterpret_cast<Data>(fn("cairo_image_surface_get_data"))(surface_);
+    REQUIRE(cairo_surface_status(surface_) == CAIRO_STATUS_SUCCESS);
   }
-  ~Png() {
-    if (surface_) destroy_(surface_);
-  }
+  ~Png() { cairo_surface_destroy(surface_); }
   Png(const Png&) = delete;
   Png& operator=(const Png&) = delete;
 
-  int width() const { return width_; }
-  int height() const { return height_; }
+  int width() const { return cairo_image_surface_get_width(surface_); }
+  int height() const { return cairo_image_surface_get_height(surface_); }
   // 0xRRGGBB at pixel (px, py) (cairo's RGB24 and ARGB32 pixels are native-endian 32-bit words).
   unsigned rgb(int px, int py) const {
     REQUIRE(px >= 0);
     REQUIRE(py >= 0);
-    REQUIRE(px < width_);
-    REQUIRE(py < height_);
+    REQUIRE(px < width());
+    REQUIRE(py < height());
+    const unsigned char* data = cairo_image_surface_get_data(surface_);
+    const std::size_t stride = std::size_t(cairo_image_surface_get_stride(surface_));
     std::uint32_t v;
-    std::memcpy(&v, data_ + std::size_t(py) * std::size_t(stride_) + std::size_t(px) * 4, 4);
+    std::memcpy(&v, data + std::size_t(py) * stride + std::size_t(px) * 4, 4);
     return v & 0xFFFFFF;
   }
 
  private:
-  void* surface_ = nullptr;
-  void (*destroy_)(void*) = nullptr;
-  int width_ = 0, height_ = 0, stride_ = 0;
-  unsigned char* data_ = nullptr;
+  cairo_surface_t* surface_;
 };
 
 // The palette the docs name (docs/pictures.md).
@@ -119,12 +96,9 @@ time = 1.0
 )";
 
 std::string make_log(const std::string& name, const char* scene_text) {
-  const std::string scene = temp_path("render-" + name + ".toml"), log = temp_path("render-" + name + ".ede");
+  const std::string scene = temp_path("render-" + name + ".toml");
   std::ofstream(scene) << scene_text;
-  const ToolRun r = run_tool("ede-sim", scene + " -q -o " + log, "render-sim-" + name);
-  INFO(r.err);
-  REQUIRE(r.status == 0);
-  return log;
+  return sim_log(scene, "", temp_path("render-" + name + ".ede"), "render-sim-" + name);
 }
 
 ToolRun render(const std::string& args, const std::string& tag) { return run_tool("ede-render", args, "render-" + tag); }
@@ -327,4 +301,15 @@ TEST_CASE("ede-render rejects bad input with a clear message and a non-zero exit
     CHECK(r.status != 0);
     CHECK(r.err.find(c.message) != std::string::npos);
   }
+}
+
+TEST_CASE("ede-render: a bad command line exits with status 2 and CLI11's message, --help with 0",
+          "[tool][ede-render]") {
+  const std::string log = temp_path("render-any.ede"), png = temp_path("render-any.png");
+  const ToolRun flag = render(log + " --at 1 --no-such-flag -o " + png, "bad-flag");
+  CHECK(flag.status == 2);
+  CHECK(flag.err.find("--no-such-flag") != std::string::npos);
+  CHECK(render(log + " --at 1 --width 3 -o " + png, "bad-width").status == 2);
+  CHECK(render(log + " --at 1", "no-output").status == 2);
+  CHECK(render("--help", "help").status == 0);
 }

@@ -7,9 +7,7 @@
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <fstream>
-#include <iterator>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -28,39 +26,14 @@ std::string test_file(const std::string& name) { return std::string(EDE_BINARY_D
 
 // Runs ede-sim on an example scene with the given options; the log is written to test_file(name).
 std::string make_log(const std::string& name, const std::string& scene, const std::string& options) {
-  const std::string log = test_file(name);
-  const ToolRun r = run_tool("ede-sim", source_path(scene) + " -q" + options + " -o " + log, "replay-sim-" + name);
-  INFO(scene << options << ": " << r.err);
-  REQUIRE(r.status == 0);
-  return log;
+  return sim_log(source_path(scene), options, test_file(name), "replay-sim-" + name);
 }
 
 ToolRun replay(const std::string& args, const std::string& tag) {
   return run_tool("ede-replay", args, "replay-" + tag);
 }
 
-std::string bytes_of(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 void write_bytes(const std::string& path, const std::string& bytes) { std::ofstream(path, std::ios::binary) << bytes; }
-
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) out.push_back(line);
-  return out;
-}
-
-std::vector<std::string> fields(const std::string& row) {
-  std::vector<std::string> out;
-  std::string field;
-  std::istringstream in(row);
-  while (std::getline(in, field, ',')) out.push_back(field);
-  if (!row.empty() && row.back() == ',') out.push_back("");
-  return out;
-}
 
 std::shared_ptr<ede::LogReader> open_reader(const std::string& path) {
   auto r = ede::LogReader::open(path);
@@ -126,9 +99,7 @@ TEST_CASE("ede-replay --at t equals the engine's own state at sampling times", "
                           "[log]\nchunk_events = 64\nkeyframe_interval = 256\n";
   for (const char* scalar : {"double", "float", "\"long double\""}) {
     const std::string set = std::string(" --set 'engine.scalar=") + scalar + "'";
-    const std::string log = test_file("sampled.ede");
-    const ToolRun sim = run_tool("ede-sim", scene + " -q" + set + " -o " + log, "replay-sampled-sim");
-    REQUIRE(sim.status == 0);
+    const std::string log = sim_log(scene, set, test_file("sampled.ede"), "replay-sampled-sim");
     for (const char* t : {"0.125", "0.25", "0.375"}) {
       const std::string csv = test_file("sampled-engine.csv");
       const ToolRun engine = run_tool(
@@ -151,7 +122,7 @@ TEST_CASE("ede-replay --event N is the state after N events", "[tool][ede-replay
   // After event n-1 and before event n, the state at the time of event n-1 is the state after n events.
   int checked = 0;
   for (std::size_t n : {1u, 200u, 511u, 512u, 513u, 1100u}) {
-    const std::string t_prev = fields(rows[n])[1], t_next = fields(rows[n + 1])[1];
+    const std::string t_prev = csv_fields(rows[n])[1], t_next = csv_fields(rows[n + 1])[1];
     if (t_prev == t_next) continue;
     const ToolRun by_event = replay(log + " --event " + std::to_string(n), "by-event-n");
     const ToolRun by_time = replay(log + " --at " + t_prev, "by-event-t");
@@ -208,7 +179,7 @@ TEST_CASE("ede-replay events lists a time or index range exactly", "[tool][ede-r
   REQUIRE(rows.size() == open_reader(log)->total_events() + 1);
   int wraps = 0;
   for (std::size_t k = 1; k < rows.size(); ++k) {
-    const auto f = fields(rows[k]);
+    const auto f = csv_fields(rows[k]);
     REQUIRE(f.size() == 9);
     CHECK(f[0] == std::to_string(k - 1));
     if (f[2] == "wrap") {
@@ -224,12 +195,12 @@ TEST_CASE("ede-replay events lists a time or index range exactly", "[tool][ede-r
 
   SECTION("a time range is every event with T0 <= time <= T1, bounds included") {
     // Bounds equal to logged times, so inclusion is tested at the boundary.
-    const std::string t0 = fields(rows[700])[1], t1 = fields(rows[1400])[1];
+    const std::string t0 = csv_fields(rows[700])[1], t1 = csv_fields(rows[1400])[1];
     const ToolRun r = replay("events " + log + " --from " + t0 + " --to " + t1, "events-time");
     REQUIRE(r.status == 0);
     std::vector<std::string> expected{rows[0]};
     for (std::size_t k = 1; k < rows.size(); ++k) {
-      const double t = std::strtod(fields(rows[k])[1].c_str(), nullptr);
+      const double t = std::strtod(csv_fields(rows[k])[1].c_str(), nullptr);
       if (t >= std::strtod(t0.c_str(), nullptr) && t <= std::strtod(t1.c_str(), nullptr)) expected.push_back(rows[k]);
     }
     CHECK(lines(r.out) == expected);
@@ -251,7 +222,7 @@ TEST_CASE("ede-replay events lists a time or index range exactly", "[tool][ede-r
     REQUIRE(r.status == 0);
     int walls = 0, actions = 0;
     for (const std::string& row : lines(r.out)) {
-      const auto f = fields(row);
+      const auto f = csv_fields(row);
       if (f[2] == "wall") {
         ++walls;
         CHECK((!f[6].empty() && f[7].empty() && f[8].empty()));
@@ -300,8 +271,8 @@ TEST_CASE("ede-replay verify reports the first event a log's scene does not repr
   const auto a = open_reader(elastic), b = open_reader(other);
   const std::string spliced = test_file("verify-spliced.ede");
   write_bytes(spliced,
-              bytes_of(other).substr(0, b->keyframes()[0].offset) +
-                  bytes_of(elastic).substr(a->keyframes()[0].offset, end_of_records(*a) - a->keyframes()[0].offset));
+              read_file(other).substr(0, b->keyframes()[0].offset) +
+                  read_file(elastic).substr(a->keyframes()[0].offset, end_of_records(*a) - a->keyframes()[0].offset));
   const ToolRun r = replay("verify -q " + spliced, "verify-spliced");
   INFO(r.out << r.err);
   CHECK(r.status == 1);
@@ -315,8 +286,8 @@ TEST_CASE("ede-replay verify reports the first event a log's scene does not repr
   const auto rows = lines(events.out);
   REQUIRE(rows.size() == index + 2);
   CHECK(index > 0);
-  CHECK(fields(rows.back())[2] == "wall");
-  for (std::size_t k = 1; k + 1 < rows.size(); ++k) CHECK(fields(rows[k])[2] == "pair");
+  CHECK(csv_fields(rows.back())[2] == "wall");
+  for (std::size_t k = 1; k + 1 < rows.size(); ++k) CHECK(csv_fields(rows[k])[2] == "pair");
   CHECK(r.out.find(std::to_string(index) + " events before it are identical") != std::string::npos);
 }
 
@@ -335,8 +306,8 @@ TEST_CASE("ede-replay verify checks the keyframes a resume would read", "[tool][
   REQUIRE(ra->keyframes()[1].resumable);
   const std::string spliced = test_file("verify-sample-spliced.ede");
   write_bytes(spliced,
-              bytes_of(b).substr(0, rb->keyframes()[0].offset) +
-                  bytes_of(a).substr(ra->keyframes()[0].offset, end_of_records(*ra) - ra->keyframes()[0].offset));
+              read_file(b).substr(0, rb->keyframes()[0].offset) +
+                  read_file(a).substr(ra->keyframes()[0].offset, end_of_records(*ra) - ra->keyframes()[0].offset));
   const ToolRun r = replay("verify -q " + spliced, "verify-sample");
   INFO(r.out << r.err);
   CHECK(r.status == 1);
@@ -354,7 +325,7 @@ TEST_CASE("ede-replay never crashes on a log with a flipped bit in a chunk", "[t
   const auto reader = open_reader(log);
   REQUIRE(reader->chunks().size() > 6);
   const ede::LogRecordRef chunk = reader->chunks()[reader->chunks().size() / 2];
-  const std::string original = bytes_of(log);
+  const std::string original = read_file(log);
   const std::string flipped = test_file("flipped.ede");
   for (int quarter = 1; quarter <= 3; ++quarter) {
     std::string bytes = original;
@@ -396,8 +367,8 @@ TEST_CASE("ede-replay diff finds the first differing event by bisection", "[tool
   REQUIRE(ra.size() >= 2);
   for (std::size_t k = 1; k + 1 < ra.size(); ++k) CHECK(ra[k] == rb[k]);
   CHECK(ra.back() != rb.back());
-  CHECK(r.out.find("  A: t = " + fields(ra.back())[1]) != std::string::npos);
-  CHECK(r.out.find("  B: t = " + fields(rb.back())[1]) != std::string::npos);
+  CHECK(r.out.find("  A: t = " + csv_fields(ra.back())[1]) != std::string::npos);
+  CHECK(r.out.find("  B: t = " + csv_fields(rb.back())[1]) != std::string::npos);
   // --full reaches the same event.
   const ToolRun full = replay("diff --full " + a + " " + b, "diff-full");
   CHECK(full.status == 1);
@@ -434,7 +405,7 @@ TEST_CASE("ede-replay diff: identical logs, a log that ends first, logs that can
 TEST_CASE("ede-replay reads a log cut short as far as it goes", "[tool][ede-replay]") {
   const std::string log = make_log("cut.ede", "examples/scenes/periodic.toml", kPeriodic);
   const auto reader = open_reader(log);
-  const std::string bytes = bytes_of(log);
+  const std::string bytes = read_file(log);
   const std::string cut = test_file("cut-short.ede");
 
   SECTION("in the middle of a chunk: incomplete, and the state up to the last complete chunk is exact") {
@@ -449,7 +420,7 @@ TEST_CASE("ede-replay reads a log cut short as far as it goes", "[tool][ede-repl
     const ToolRun events = replay("events " + log + " --from-event " + std::to_string(chunk.first_event - 1) +
                                       " --to-event " + std::to_string(chunk.first_event - 1),
                                   "cut-last");
-    const std::string t_last = fields(lines(events.out).at(1))[1];
+    const std::string t_last = csv_fields(lines(events.out).at(1))[1];
     for (const std::string& at : {std::string("0.01"), t_last}) {
       const ToolRun a = replay(cut + " --at " + at, "cut-at");
       REQUIRE(a.status == 0);
@@ -507,13 +478,16 @@ TEST_CASE("ede-replay rejects missing files, other files and bad command lines c
   const std::string log =
       make_log("cli.ede", "examples/scenes/periodic.toml", " --set species.gas.count=100 --set stop.time=0.1");
   for (const std::string& args :
-       {std::string(""), log, log + " --at 0.1 --event 3", log + " --no-such-flag",
-        "events " + log + " --from 0.2 --to 0.1", "events " + log + " --from 0.1 --from-event 3", "diff " + log}) {
+       {std::string(""), log, log + " --at 0.1 --event 3", log + " --no-such-flag", std::string("--no-such-flag"),
+        "info " + log + " --no-such-flag", "events " + log + " --from 0.2 --to 0.1",
+        "events " + log + " --from 0.1 --from-event 3", "diff " + log}) {
     const ToolRun r = replay(args, "bad-cli");
     INFO(args << ": " << r.err);
     CHECK(r.status == 2);
     CHECK(!r.err.empty());
   }
+  CHECK(replay("--help", "help").status == 0);
+  CHECK(replay("verify --help", "help-verify").status == 0);
   for (const std::string& args : {log + " --at -1", log + " --at 0.1x", log + " --at 5", log + " --event 100000000"}) {
     const ToolRun r = replay(args, "bad-value");
     INFO(args << ": " << r.err);

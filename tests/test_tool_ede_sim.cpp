@@ -16,13 +16,6 @@ double json_number(const std::string& json, const std::string& key) {
   REQUIRE(at != std::string::npos);
   return std::strtod(json.c_str() + at + key.size() + 4, nullptr);
 }
-
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) out.push_back(line);
-  return out;
-}
 }  // namespace
 
 TEST_CASE("ede-sim runs the default scene and reports the required JSON keys", "[tool][ede-sim]") {
@@ -117,8 +110,11 @@ TEST_CASE("ede-sim rejects bad input with a clear message and a non-zero exit", 
     CHECK(r.status == 1);
     CHECK(r.err.find("--set") != std::string::npos);
   }
-  SECTION("a bad command line") {
+  SECTION("a bad command line: status 2 and CLI11's message; --help: status 0") {
     const ToolRun r = run_tool("ede-sim", "--no-such-flag", "badflag");
-    CHECK(r.status != 0);
+    CHECK(r.status == 2);
+    CHECK(r.err.find("--no-such-flag") != std::string::npos);
+    CHECK(run_tool("ede-sim", source_path("examples/gas.toml") + " --set", "badset-arg").status == 2);
+    CHECK(run_tool("ede-sim", "--help", "help").status == 0);
   }
 }

@@ -2,11 +2,7 @@
 // example scenes (shortened with --set), they write CSVs with the documented headers and numbers that
 // agree with the log, draw non-empty PNG and SVG figures, and fail clearly on a missing log, an unknown
 // species and a time after the end. Scratch files carry the process id (ctest runs cases in parallel).
-#include <unistd.h>
-
 #include <catch2/catch.hpp>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -18,37 +14,15 @@ using namespace ede::test;
 
 namespace {
 
-std::string scratch(const std::string& name) {
-  return std::string(EDE_BINARY_DIR) + "/tests/" + std::to_string(::getpid()) + "-stats-" + name;
-}
+std::string scratch(const std::string& name) { return temp_path("stats-" + name); }
 
 // gas.toml (2000 disks, walls) shortened to 10 collisions per disk; --set options appended.
 std::string make_log(const std::string& name, const std::string& scene = "examples/gas.toml",
                      const std::string& options = " --set stop.collisions_per_particle=10") {
-  const std::string log = scratch(name);
-  const ToolRun r = run_tool("ede-sim", source_path(scene) + " -q" + options + " -o " + log, "stats-sim-" + name);
-  INFO(r.err);
-  REQUIRE(r.status == 0);
-  return log;
+  return sim_log(source_path(scene), options, scratch(name), "stats-sim-" + name);
 }
 
 ToolRun stats(const std::string& args, const std::string& tag) { return run_tool("ede-stats", args, "stats-" + tag); }
-
-std::vector<std::string> lines_of(const std::string& path) {
-  std::ifstream in(path);
-  std::vector<std::string> out;
-  for (std::string line; std::getline(in, line);) out.push_back(line);
-  return out;
-}
-
-std::vector<std::string> fields(const std::string& row) {
-  std::vector<std::string> out;
-  std::string f;
-  std::istringstream in(row);
-  while (std::getline(in, f, ',')) out.push_back(f);
-  if (!row.empty() && row.back() == ',') out.push_back("");
-  return out;
-}
 
 // A figure file that exists and looks like its format.
 void check_figure(const std::string& path, const std::string& format) {
@@ -68,13 +42,13 @@ TEST_CASE("ede-stats hist writes the documented CSV and reports kT and KS", "[to
   REQUIRE(r.status == 0);
   CHECK_THAT(r.out, Catch::Contains("kT               0.5"));
   CHECK_THAT(r.out, Catch::Contains("KS vs MB         D = "));
-  const std::vector<std::string> rows = lines_of(csv);
+  const std::vector<std::string> rows = lines(read_file(csv));
   REQUIRE(rows.size() == 26);
   CHECK(rows[0] == "bin_left,bin_right,density,count,mb_density,initial_density,initial_count");
   double integral = 0, mb = 0, initial = 0;
   std::uint64_t count = 0;
   for (std::size_t k = 1; k < rows.size(); ++k) {
-    const std::vector<std::string> f = fields(rows[k]);
+    const std::vector<std::string> f = csv_fields(rows[k]);
     REQUIRE(f.size() == 7);
     const double width = std::stod(f[1]) - std::stod(f[0]);
     integral += std::stod(f[2]) * width;
@@ -120,15 +94,15 @@ TEST_CASE("ede-stats species: table and CSV per species and for all, over time",
   INFO(r.err);
   REQUIRE(r.status == 0);
   CHECK_THAT(r.out, Catch::Contains("heavy"));
-  const std::vector<std::string> rows = lines_of(csv);
+  const std::vector<std::string> rows = lines(read_file(csv));
   REQUIRE(rows.size() == 1 + 3 * 3);  // t = 0, 0.5, 1; light, heavy, all
   CHECK(rows[0] ==
         "time,species,n,mass_min,mass_max,mean_speed,mean_kinetic_energy,kT,mean_speed_error,"
         "mean_kinetic_energy_error");
   CHECK(rows[1] == "0,light,1000,1,1,1,0.5,0.5,0,0");
-  CHECK(fields(rows[2])[6] == "2");  // heavy: m = 4, speed 1
-  CHECK(fields(rows[3])[1] == "all");
-  CHECK(fields(rows[7])[0] == "1");
+  CHECK(csv_fields(rows[2])[6] == "2");  // heavy: m = 4, speed 1
+  CHECK(csv_fields(rows[3])[1] == "all");
+  CHECK(csv_fields(rows[7])[0] == "1");
   const std::string figure = scratch("species.svg");
   const ToolRun p = stats("species " + log + " --every 0.5 --plot " + figure, "species-plot");
   INFO(p.err);
@@ -146,14 +120,14 @@ TEST_CASE("ede-stats energy: one curve per log labelled by restitution, conserve
   INFO(r.err);
   REQUIRE(r.status == 0);
   check_figure(figure, "png");
-  const std::vector<std::string> rows = lines_of(csv);
+  const std::vector<std::string> rows = lines(read_file(csv));
   REQUIRE(rows.size() == 1 + 2 * 101);
   CHECK(rows[0] == "label,restitution,time,kinetic_energy,energy_ratio,mean_kinetic_energy,mean_kinetic_energy:gas");
-  CHECK(fields(rows[1])[0] == "ξ = 1");
-  CHECK(fields(rows[102])[0] == "ξ = 0.9");
-  for (std::size_t k = 1; k <= 101; ++k) CHECK(std::abs(std::stod(fields(rows[k])[4]) - 1) < 1e-12);
-  CHECK(std::stod(fields(rows.back())[4]) < 0.9);
-  CHECK(fields(rows.back())[2] == "0.10000000000000001");
+  CHECK(csv_fields(rows[1])[0] == "ξ = 1");
+  CHECK(csv_fields(rows[102])[0] == "ξ = 0.9");
+  for (std::size_t k = 1; k <= 101; ++k) CHECK(std::abs(std::stod(csv_fields(rows[k])[4]) - 1) < 1e-12);
+  CHECK(std::stod(csv_fields(rows.back())[4]) < 0.9);
+  CHECK(csv_fields(rows.back())[2] == "0.10000000000000001");
   // The default grid: 1/20 of the mean free time.
   const ToolRun d = stats("energy " + elastic, "energy-default");
   REQUIRE(d.status == 0);
@@ -169,7 +143,7 @@ TEST_CASE("ede-stats collisions: counts equal the log's, speed classes sum to 10
   INFO(r.err);
   REQUIRE(r.status == 0);
   check_figure(figure, "svg");
-  const std::vector<std::string> rows = lines_of(csv);
+  const std::vector<std::string> rows = lines(read_file(csv));
   REQUIRE(rows.size() >= 101);
   CHECK(rows[0] ==
         "time,pair_collisions,wall_collisions,collisions_per_particle,collision_rate,mean_free_time,"
@@ -178,15 +152,15 @@ TEST_CASE("ede-stats collisions: counts equal the log's, speed classes sum to 10
   REQUIRE(reader);
   auto kinds = ede::count_logged_kinds(*reader.value());
   REQUIRE(kinds);
-  const std::vector<std::string> last = fields(rows.back());
+  const std::vector<std::string> last = csv_fields(rows.back());
   CHECK(std::stoull(last[1]) == kinds.value().of(ede::EventKind::Pair));
   CHECK(std::stoull(last[2]) == kinds.value().of(ede::EventKind::Wall));
   CHECK(std::stod(last[3]) == Approx(10).margin(1e-3));
-  CHECK(fields(rows[1])[4].empty());  // no rate before the first interval
-  CHECK(fields(rows[1])[6] == "0");   // every disk starts at speed 1 = v_ref: all medium
-  CHECK(fields(rows[1])[7] == "100");
+  CHECK(csv_fields(rows[1])[4].empty());  // no rate before the first interval
+  CHECK(csv_fields(rows[1])[6] == "0");   // every disk starts at speed 1 = v_ref: all medium
+  CHECK(csv_fields(rows[1])[7] == "100");
   for (std::size_t k = 2; k < rows.size(); ++k) {
-    const std::vector<std::string> f = fields(rows[k]);
+    const std::vector<std::string> f = csv_fields(rows[k]);
     CHECK(std::stod(f[6]) + std::stod(f[7]) + std::stod(f[8]) == Approx(100).epsilon(1e-13));
     CHECK(std::stod(f[5]) == Approx(1 / std::stod(f[4])));
   }
@@ -208,5 +182,16 @@ TEST_CASE("ede-stats fails clearly on a missing log, an unknown species, a time 
   CHECK_THAT(late.err, Catch::Contains("--at 5 is after the end of the log (t = 0.20000000000000001)"));
   CHECK(stats("species " + log + " --at 0.3", "late-species").status == 1);
   CHECK(stats("hist " + log + " --at soon", "nan").status == 1);
-  CHECK(stats("hist " + log + " --quantity mass", "quantity").status != 0);
+  CHECK(stats("hist " + log + " --quantity mass", "quantity").status == 2);
+}
+
+TEST_CASE("ede-stats: a bad command line exits with status 2 and CLI11's message, --help with 0", "[tool][ede-stats]") {
+  const ToolRun flag = stats("hist " + scratch("any.ede") + " --no-such-flag", "bad-flag");
+  CHECK(flag.status == 2);
+  CHECK_THAT(flag.err, Catch::Contains("--no-such-flag"));
+  CHECK(stats("species", "no-log").status == 2);
+  CHECK(stats("", "no-subcommand").status == 2);
+  CHECK(stats("histogram " + scratch("any.ede"), "bad-subcommand").status == 2);
+  CHECK(stats("--help", "help").status == 0);
+  CHECK(stats("energy --help", "help-energy").status == 0);
 }

@@ -2,12 +2,9 @@
 // consistent with the summary), figures in PNG and SVG, and clear errors on bad input.
 //
 // Logs come from ede-sim on the example scenes, shortened with --set; scratch files are per process.
-#include <unistd.h>
-
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -17,54 +14,24 @@ using namespace ede::test;
 
 namespace {
 
-std::string scratch(const std::string& name) {
-  return std::string(EDE_BINARY_DIR) + "/tests/" + std::to_string(::getpid()) + "-pressure-tool-" + name;
-}
+std::string scratch(const std::string& name) { return temp_path("pressure-tool-" + name); }
 
 // A walled gas (examples/gas.toml: 2000 disks, phi = 0.157) and a periodic one (examples/scenes/periodic.toml),
 // each written once per process.
 const std::string& walled_log() {
-  static const std::string log = [] {
-    const std::string path = scratch("walls.ede");
-    const ToolRun r = run_tool("ede-sim", source_path("examples/gas.toml") + " -q --set stop.collisions_per_particle=40 -o " + path,
-                               "pressure-sim-walls");
-    INFO(r.err);
-    REQUIRE(r.status == 0);
-    return path;
-  }();
+  static const std::string log = sim_log(source_path("examples/gas.toml"), " --set stop.collisions_per_particle=40",
+                                         scratch("walls.ede"), "pressure-sim-walls");
   return log;
 }
 
 const std::string& periodic_log() {
-  static const std::string log = [] {
-    const std::string path = scratch("periodic.ede");
-    const ToolRun r = run_tool("ede-sim", source_path("examples/scenes/periodic.toml") + " -q --set stop.time=1 -o " + path,
-                               "pressure-sim-periodic");
-    INFO(r.err);
-    REQUIRE(r.status == 0);
-    return path;
-  }();
+  static const std::string log = sim_log(source_path("examples/scenes/periodic.toml"), " --set stop.time=1",
+                                         scratch("periodic.ede"), "pressure-sim-periodic");
   return log;
 }
 
 ToolRun pressure(const std::string& args, const std::string& tag) {
   return run_tool("ede-stats", "pressure " + args, "pressure-" + tag);
-}
-
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) out.push_back(line);
-  return out;
-}
-
-std::vector<std::string> fields(const std::string& row) {
-  std::vector<std::string> out;
-  std::string field;
-  std::istringstream in(row);
-  while (std::getline(in, field, ',')) out.push_back(field);
-  if (!row.empty() && row.back() == ',') out.push_back("");
-  return out;
 }
 
 // The number after `label` in the summary.
@@ -102,13 +69,13 @@ TEST_CASE("ede-stats pressure: summary of a walled gas, and a CSV row per block"
   CHECK(rows[0] == kHeader);
   double sum = 0;
   for (std::size_t k = 1; k < rows.size(); ++k) {
-    const auto f = fields(rows[k]);
+    const auto f = csv_fields(rows[k]);
     REQUIRE(f.size() == 14);
     CHECK(f[0] == std::to_string(k - 1));
     CHECK_FALSE(f[8].empty());  // P_wall
     sum += std::stod(f[9]);
   }
-  CHECK(std::stod(fields(rows[1])[1]) == Approx(0.2));
+  CHECK(std::stod(csv_fields(rows[1])[1]) == Approx(0.2));
   CHECK(sum / 10 == Approx(p_virial).epsilon(1e-5));  // the summary is the mean of the blocks
 }
 
@@ -122,7 +89,7 @@ TEST_CASE("ede-stats pressure: a periodic gas has only the virial pressure", "[t
   CHECK(r.out.find("difference") == std::string::npos);
   const std::vector<std::string> rows = lines(read_file(csv));
   REQUIRE(rows.size() == 21);  // 20 blocks by default
-  const auto f = fields(rows[1]);
+  const auto f = csv_fields(rows[1]);
   REQUIRE(f.size() == 14);
   CHECK(f[4].empty());
   CHECK(f[8].empty());
@@ -160,6 +127,12 @@ TEST_CASE("ede-stats pressure: clear errors on a missing log, an empty window an
 
   const ToolRun one_block = pressure(walled_log() + " --blocks 1", "one-block");
   CHECK(one_block.status == 2);
+  CHECK(one_block.err.find("ede-stats pressure: --blocks must be at least 2") == 0);
+
+  const ToolRun flag = pressure(walled_log() + " --no-such-flag", "bad-flag");
+  CHECK(flag.status == 2);
+  CHECK(flag.err.find("--no-such-flag") != std::string::npos);
+  CHECK(pressure(walled_log() + " --blocks many", "bad-number").status == 2);
 
   const ToolRun bad_plot = pressure(walled_log() + " --plot " + scratch("figure.pdf"), "bad-plot");
   CHECK(bad_plot.status == 2);

@@ -5,10 +5,10 @@
 // width then lx / bins exactly, so the bins tile the box with no partial bin at the right edge.
 // Rejected: a fixed bin width in box units, which would make a scan over bed size change its resolution.
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "ede/crater.hpp"
+#include "number_text.hpp"
 
 namespace ede {
 
@@ -17,16 +17,10 @@ namespace {
 // A very fine profile is a mistake (a typo in --bin-width), not a request for 10^9 bins.
 constexpr double kMaxBins = 1e7;
 
-std::string number(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.6g", v);
-  return b;
-}
-
 Status check_length(const char* what, double v, bool zero_allowed) {
   if (!std::isfinite(v) || v < 0 || (!zero_allowed && v == 0))
     return Error{std::string(what) + " must be a finite number " + (zero_allowed ? ">= 0" : "> 0") + ", got " +
-                 number(v)};
+                 short_number(v)};
   return Ok{};
 }
 
@@ -58,7 +52,8 @@ Result<CraterLengths> resolve_crater_lengths(const DiskPositions& before, const 
   if (Status c = check_length("the link gap", l.link_gap, true); !c) return c.error();
   const double bins = std::round(box.lx / l.bin_width);
   if (bins > kMaxBins)
-    return Error{"a bin width of " + number(l.bin_width) + " gives more than 10^7 bins across the box; use a wider one"};
+    return Error{"a bin width of " + short_number(l.bin_width) +
+                 " gives more than 10^7 bins across the box; use a wider one"};
   l.bins = bins < 1 ? 1 : std::size_t(bins);
   l.bin_width = box.lx / double(l.bins);
   return l;

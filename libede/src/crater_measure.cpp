@@ -7,21 +7,14 @@
 // time by the shared drift function and only then converted to double for the geometry.
 // Rejected: taking the state from the engine at its stop (ede-sim --final-state), which ties the metric
 // to the scene's stop condition; from a log any time, and any fraction, can be measured.
-#include <cstdio>
-
 #include "ede/crater.hpp"
 #include "ede/engine.hpp"
 #include "ede/replay.hpp"
+#include "number_text.hpp"
 
 namespace ede {
 
 namespace {
-
-std::string number(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.6g", v);
-  return b;
-}
 
 template <class T>
 DiskPositions positions(const Particles<T>& p, T t) {
@@ -63,7 +56,7 @@ Result<CraterMeasurement> measure_crater(std::shared_ptr<const LogReader> log, c
   if (Status s = replay.seek_event(0); !s) return s.error();
   const DiskPositions before = positions(replay.particles(), replay.time());
 
-  const std::string f = number(req.energy_fraction);
+  const std::string f = short_number(req.energy_fraction);
   if (req.at) {
     if (Status s = replay.seek_time(*req.at); !s) return s.error();
     m.source = CraterTimeSource::Requested;
@@ -80,7 +73,7 @@ Result<CraterMeasurement> measure_crater(std::shared_ptr<const LogReader> log, c
     m.source = CraterTimeSource::LogEnd;
     m.when = req.at_end ? "the log's end, as asked"
                         : "the log's end: the kinetic energy never fell to " + f + " of its initial value (" +
-                              number(m.energy.end_fraction) + " of it is left at the end)";
+                              short_number(m.energy.end_fraction) + " of it is left at the end)";
   }
   m.time = double(replay.time());
   m.events = replay.events_applied();

@@ -25,6 +25,16 @@ std::vector<double> collect(const GasSnapshot& s, std::int32_t species, F value)
   return out;
 }
 
+// The mean of value(i) over the selected disks (summed in long double), 0 if there are none.
+template <class F>
+double mean_of(const GasSnapshot& s, std::int32_t species, F value) {
+  long double sum = 0;
+  std::uint64_t n = 0;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (selected(s, i, species)) sum += value(i), ++n;
+  return n ? double(sum / n) : 0.0;
+}
+
 double standard_error(long double sum, long double sum2, std::uint64_t n) {
   if (n < 2) return 0;
   const long double mean = sum / n;
@@ -96,19 +106,11 @@ std::vector<SpeciesStats> species_stats(const GasSnapshot& s) {
 }
 
 double temperature(const GasSnapshot& s, std::int32_t species) {
-  long double sum = 0;
-  std::uint64_t n = 0;
-  for (std::size_t i = 0; i < s.size(); ++i)
-    if (selected(s, i, species)) sum += s.kinetic_energy(i), ++n;
-  return n ? double(sum / n) : 0.0;
+  return mean_of(s, species, [&](std::size_t i) { return s.kinetic_energy(i); });
 }
 
 double mean_speed(const GasSnapshot& s, std::int32_t species) {
-  long double sum = 0;
-  std::uint64_t n = 0;
-  for (std::size_t i = 0; i < s.size(); ++i)
-    if (selected(s, i, species)) sum += s.speed(i), ++n;
-  return n ? double(sum / n) : 0.0;
+  return mean_of(s, species, [&](std::size_t i) { return s.speed(i); });
 }
 
 SpeedClasses speed_classes(const GasSnapshot& s, double reference_speed, std::int32_t species) {

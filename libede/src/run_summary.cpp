@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "number_text.hpp"
+
 namespace ede {
 
 namespace {
@@ -34,12 +36,6 @@ std::string quoted(const std::string& s) {
     }
   }
   return out + "\"";
-}
-
-std::string human(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
 }
 
 template <class T>
@@ -99,18 +95,18 @@ std::string to_text(const RunSummary& s) {
     << ", cell " << c.of(EventKind::Cell) << ", wrap " << c.of(EventKind::Wrap) << ", action "
     << c.of(EventKind::Action) << "); samples " << c.of(EventKind::Sample) << ", stale predictions " << c.stale
     << ", TC-elastic " << c.tc_elastic << "\n"
-    << "collisions/disk  " << human(s.collisions_per_particle) << "\n"
-    << "simulated time   " << human(s.sim_time) << "\n"
-    << "wall time        " << human(s.wall_seconds) << " s (setup " << human(s.setup_seconds) << " s)\n"
-    << "speed            " << human(s.events_per_second() / 1e6) << " M events/s, "
-    << human(s.collisions_per_second() / 1e6) << " M collisions/s\n"
-    << "kinetic energy   " << human(s.energy_initial) << " -> " << human(s.energy_final) << " (ratio "
-    << human(s.energy_initial > 0 ? s.energy_final / s.energy_initial : 0) << ")\n"
-    << "momentum         (" << human(s.momentum_initial[0]) << ", " << human(s.momentum_initial[1]) << ") -> ("
-    << human(s.momentum_final[0]) << ", " << human(s.momentum_final[1]) << ")\n"
-    << "memory           engine " << human(double(s.engine_bytes) / 1048576) << " MiB ("
-    << human(s.disks ? double(s.engine_bytes) / double(s.disks) : 0) << " B/disk), peak RSS "
-    << human(double(s.peak_rss_bytes) / 1048576) << " MiB\n";
+    << "collisions/disk  " << short_number(s.collisions_per_particle) << "\n"
+    << "simulated time   " << short_number(s.sim_time) << "\n"
+    << "wall time        " << short_number(s.wall_seconds) << " s (setup " << short_number(s.setup_seconds) << " s)\n"
+    << "speed            " << short_number(s.events_per_second() / 1e6) << " M events/s, "
+    << short_number(s.collisions_per_second() / 1e6) << " M collisions/s\n"
+    << "kinetic energy   " << short_number(s.energy_initial) << " -> " << short_number(s.energy_final) << " (ratio "
+    << short_number(s.energy_initial > 0 ? s.energy_final / s.energy_initial : 0) << ")\n"
+    << "momentum         (" << short_number(s.momentum_initial[0]) << ", " << short_number(s.momentum_initial[1])
+    << ") -> (" << short_number(s.momentum_final[0]) << ", " << short_number(s.momentum_final[1]) << ")\n"
+    << "memory           engine " << short_number(double(s.engine_bytes) / 1048576) << " MiB ("
+    << short_number(s.disks ? double(s.engine_bytes) / double(s.disks) : 0) << " B/disk), peak RSS "
+    << short_number(double(s.peak_rss_bytes) / 1048576) << " MiB\n";
   return o.str();
 }
 

@@ -1,13 +1,17 @@
-// What the benchmarks share: the key=value lines a measuring child sends back, medians, and formatting.
+// What the benchmarks share: running a measurement in a child and reading the key=value text it sends
+// back, medians, and formatting.
 #pragma once
 
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <map>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "child_process.hpp"
 
 namespace ede::bench {
 
@@ -25,6 +29,26 @@ inline KeyValues parse_key_values(const std::string& text) {
 }
 
 inline double get(const KeyValues& kv, const std::string& key) { return kv.count(key) ? kv.at(key) : 0.0; }
+
+// A measurement run in a child process (run_in_child): the key=value pairs it sent back, or why it failed.
+struct ChildMeasurement {
+  bool ok = false;
+  std::string failure;  // why not ok, then what the child said
+  KeyValues values;
+  double peak_rss = 0;  // bytes
+};
+
+inline ChildMeasurement run_child_measurement(const std::function<int(std::string& output)>& body) {
+  const tools::ChildResult r = tools::run_in_child(body);
+  ChildMeasurement m;
+  m.ok = r.ok;
+  m.peak_rss = double(r.peak_rss_bytes);
+  if (r.ok)
+    m.values = parse_key_values(r.output);
+  else
+    m.failure = r.failure + (r.output.empty() ? "" : ": " + r.output);
+  return m;
+}
 
 // The machines are noisy: benchmarks report medians of repeats.
 inline double median(std::vector<double> v) {

@@ -25,7 +25,6 @@
 #include <sstream>
 
 #include "bench_common.hpp"
-#include "child_process.hpp"
 #include "cpu_cycles.hpp"
 #include "ede/engine.hpp"
 #include "ede/log_column_sizes.hpp"
@@ -152,14 +151,12 @@ int run_child(const RunConfig& c, std::string& out) {
 }
 
 RunResult run_measured(const RunConfig& c) {
-  const tools::ChildResult r = tools::run_in_child([&](std::string& out) { return run_child(c, out); });
+  const ChildMeasurement r = run_child_measurement([&](std::string& out) { return run_child(c, out); });
   RunResult m;
   m.ok = r.ok;
-  if (!r.ok) {
-    m.failure = r.failure + (r.output.empty() ? "" : ": " + r.output);
-    return m;
-  }
-  const KeyValues kv = parse_key_values(r.output);
+  m.failure = r.failure;
+  if (!r.ok) return m;
+  const KeyValues& kv = r.values;
   m.disks = get(kv, "disks"), m.events = get(kv, "events"), m.collisions = get(kv, "collisions");
   m.logged = get(kv, "logged"), m.bytes = get(kv, "bytes"), m.sim_time = get(kv, "sim_time");
   m.wall = get(kv, "wall"), m.cycles = get(kv, "cycles");
@@ -482,11 +479,12 @@ int seek_child(const std::string& path, std::string& out) {
 }
 
 SeekResult measure_seeks(const std::string& path) {
-  const tools::ChildResult r = tools::run_in_child([&](std::string& out) { return seek_child(path, out); });
+  const ChildMeasurement r = run_child_measurement([&](std::string& out) { return seek_child(path, out); });
   SeekResult m;
   m.ok = r.ok;
-  if (!r.ok) return m.failure = r.failure + (r.output.empty() ? "" : ": " + r.output), m;
-  const KeyValues kv = parse_key_values(r.output);
+  m.failure = r.failure;
+  if (!r.ok) return m;
+  const KeyValues& kv = r.values;
   m.open = get(kv, "open");
   m.replay_wall = get(kv, "replay_wall");
   m.replay_events = get(kv, "replay_events");

@@ -12,7 +12,6 @@
 #include <sstream>
 
 #include "bench_common.hpp"
-#include "child_process.hpp"
 #include "cpu_cycles.hpp"
 #include "ede/engine.hpp"
 #include "ede/scene_loader.hpp"
@@ -64,15 +63,13 @@ int measure_in_child(const std::string& path, std::uint64_t events, Algorithm al
 }
 
 Measurement measure(const std::string& path, std::uint64_t events, Algorithm algorithm) {
-  const tools::ChildResult r = tools::run_in_child(
-      [&](std::string& out) { return measure_in_child(path, events, algorithm, out); });
+  const ChildMeasurement r =
+      run_child_measurement([&](std::string& out) { return measure_in_child(path, events, algorithm, out); });
   Measurement m;
   m.ok = r.ok;
-  if (!r.ok) {
-    m.failure = r.failure + (r.output.empty() ? "" : ": " + r.output);
-    return m;
-  }
-  const KeyValues kv = parse_key_values(r.output);
+  m.failure = r.failure;
+  if (!r.ok) return m;
+  const KeyValues& kv = r.values;
   m.events = get(kv, "events");
   m.collisions = get(kv, "collisions");
   m.wall = get(kv, "wall");
@@ -80,7 +77,7 @@ Measurement measure(const std::string& path, std::uint64_t events, Algorithm alg
   m.engine_bytes = get(kv, "engine_bytes");
   m.disks = get(kv, "disks");
   m.setup = get(kv, "setup");
-  m.peak_rss = double(r.peak_rss_bytes);
+  m.peak_rss = r.peak_rss;
   return m;
 }
 

@@ -5,6 +5,7 @@
 
 #include "bench_log.hpp"
 #include "bench_speed.hpp"
+#include "command_line.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"ede-bench: benchmarks of the ede engine"};
@@ -35,7 +36,7 @@ int main(int argc, char** argv) {
   l->add_option("--out-dir", log.out_dir, "where the temporary logs go (deleted at the end)");
   l->add_flag("--quick", quick, "a smoke run (well under a minute): 1 repeat, 5e5 events, 2e6 seek events");
 
-  CLI11_PARSE(app, argc, argv);
+  if (const auto stop = ede::tools::parse_command_line(app, argc, argv)) return *stop;
   if (*s) return ede::bench::run_speed(speed);
   if (*l) {
     if (log.scenes.empty()) log.scenes = ede::bench::default_log_bench_scenes();

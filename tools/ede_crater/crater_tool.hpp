@@ -16,6 +16,7 @@
 
 #include "ede/crater.hpp"
 #include "ede/result.hpp"
+#include "exact_text.hpp"
 
 namespace ede::crater_tool {
 
@@ -36,9 +37,8 @@ inline int usage_error(const std::string& message) {
   return 2;
 }
 
-// Exact text of a double (17 significant digits) and a short one for reports.
-std::string exact(double v);
-std::string brief(double v);
+using tools::brief;  // short text of a double for reports (6 significant digits)
+using tools::exact;  // exact text of a double (17 significant digits)
 
 // The options of a measurement, as typed; shared by `measure` and `scan` (measure_options.cpp).
 struct MeasureOptions {

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "command_line.hpp"
 #include "crater_tool.hpp"
 
 int main(int argc, char** argv) {
@@ -23,19 +24,7 @@ int main(int argc, char** argv) {
   };
 
   // `ede-crater LOG ...` is `ede-crater measure LOG ...`.
-  std::vector<char*> args(argv, argv + argc);
-  std::string measure = "measure";
-  if (argc > 1) {
-    const std::string first = argv[1];
-    bool known = first == "-h" || first == "--help";
-    for (const auto& [name, run] : commands) known = known || first == name;
-    if (!known) args.insert(args.begin() + 1, measure.data());
-  }
-  try {
-    app.parse(int(args.size()), args.data());
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;
-  }
+  if (const auto stop = ede::tools::parse_command_line(app, argc, argv, "measure")) return *stop;
   for (const auto& [name, run] : commands)
     if (app.got_subcommand(name)) return run();
   return usage_error("give a log, or a subcommand");

@@ -3,12 +3,11 @@
 //
 // Lengths are typed as "0.002" (box units) or "0.5r" (bed radii), so a default that scales with the grain
 // size and an absolute value read the same way on the command line. --at is parsed in the log's scalar type
-// (as ede-replay does), so --at 0.25 means exactly the value of T a run stopping at stop.time = 0.25 reaches.
+// (exact_text.hpp, as ede-replay does), so --at 0.25 means exactly the value of T a run stopping at
+// stop.time = 0.25 reaches.
 // Rejected: separate --threshold-radii options, which double every option for one unit.
-#include <cerrno>
-#include <cmath>
-#include <cstdlib>
 #include <memory>
+#include <optional>
 
 #include "crater_tool.hpp"
 #include "ede/log_reader.hpp"
@@ -25,43 +24,15 @@ Result<CraterLength> parse_length(const std::string& text, const char* option) {
     l.in_bed_radii = true;
     number.pop_back();
   }
-  char* end = nullptr;
-  errno = 0;
-  l.value = std::strtod(number.c_str(), &end);
-  if (number.empty() || end != number.c_str() + number.size() || !std::isfinite(l.value) || errno == ERANGE ||
-      l.value < 0)
+  const std::optional<double> value = tools::parse_exact<double>(number);
+  if (!value || *value < 0)
     return Error{std::string(option) + " '" + text +
                  "' is not a length: give a number >= 0 in box units (0.002) or in bed radii (0.5r)"};
+  l.value = *value;
   return l;
 }
 
-float parse_number(const char* s, char** end, float) { return std::strtof(s, end); }
-double parse_number(const char* s, char** end, double) { return std::strtod(s, end); }
-long double parse_number(const char* s, char** end, long double) { return std::strtold(s, end); }
-
-template <class T>
-Result<T> parse_time(const std::string& text) {
-  char* end = nullptr;
-  errno = 0;
-  const T v = parse_number(text.c_str(), &end, T{});
-  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(double(v)) || errno == ERANGE || v < T(0))
-    return Error{"--at '" + text + "' is not a time: give a number >= 0 (such as 0.25) or 'end'"};
-  return v;
-}
-
 }  // namespace
-
-std::string exact(double v) {
-  char b[40];
-  std::snprintf(b, sizeof b, "%.17g", v);
-  return b;
-}
-
-std::string brief(double v) {
-  char b[40];
-  std::snprintf(b, sizeof b, "%.6g", v);
-  return b;
-}
 
 void add_measure_options(CLI::App& app, MeasureOptions& o) {
   auto* at = app.add_option("--at", o.at, "measure at this time (exact in the log's scalar type), or 'end'");
@@ -114,11 +85,12 @@ Result<MeasuredLog> measure_log(const std::string& path, const MeasureOptions& o
     req.bed_species = o.bed_species;
     req.settings = settings.value();
     req.curve_points = o.points;
-    req.at_end = o.at == "end";
-    if (!o.at.empty() && !req.at_end) {
-      auto t = parse_time<T>(o.at);
-      if (!t) return t.error();
-      req.at = t.value();
+    if (!o.at.empty()) {
+      const tools::ReadTime<T> t = tools::read_time<T>(o.at);
+      if (t.kind == tools::TimeText::NotANumber || t.kind == tools::TimeText::Negative)
+        return Error{"--at '" + o.at + "' is not a time: give a number >= 0 (such as 0.25) or 'end'"};
+      req.at_end = t.kind == tools::TimeText::End;
+      if (!req.at_end) req.at = t.value;
     }
     return measure_crater<T>(reader, req);
   });

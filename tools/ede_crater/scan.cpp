@@ -136,7 +136,6 @@ Stats stats_of(const std::vector<double>& xs) {
   return s;
 }
 
-std::string cell(double v) { return std::isnan(v) ? "" : exact(v); }
 
 Status write_results(const std::vector<std::string>& values, const std::vector<Run>& runs,
                      const std::vector<MeasuredLog>& measured, const std::string& per_run, const std::string& aggregate) {
@@ -166,7 +165,7 @@ Status write_results(const std::vector<std::string>& values, const std::vector<R
     a += csv_field(values[v]) + "," + axis_position(values[v]) + "," + std::to_string(columns[0].size());
     for (const auto& col : columns) {
       const Stats st = stats_of(col);
-      a += "," + exact(st.mean) + "," + cell(st.stderr_);
+      a += "," + exact(st.mean) + "," + tools::exact_cell(st.stderr_);
     }
     a += "\n";
   }

@@ -1,35 +1,22 @@
 // LogStates for each scalar type: Replay<T> underneath, Frames of doubles out; see log_states.hpp.
 //
-// Time text is parsed with the strto* of the log's type and checked against Replay::final_time(); "end"
-// of an incomplete log seeks by event count (exact in every type, as ede-replay does). Rejected: parsing
-// times as double for every log (a long double log's times would be rounded).
+// Time text is parsed in the log's type (exact_text.hpp: the strto* of T) and checked against
+// Replay::final_time(); "end" of an incomplete log seeks by event count (exact in every type, as
+// ede-replay does). Rejected: parsing times as double for every log (a long double log's times would be
+// rounded).
 #include "log_states.hpp"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 #include "ede/log_reader.hpp"
 #include "ede/replay.hpp"
+#include "exact_text.hpp"
 #include "scalar_dispatch.hpp"
 
 namespace ede::render {
 
 namespace {
-
-inline float parse_number(const char* s, char** end, float) { return std::strtof(s, end); }
-inline double parse_number(const char* s, char** end, double) { return std::strtod(s, end); }
-inline long double parse_number(const char* s, char** end, long double) { return std::strtold(s, end); }
-
-template <class T>
-std::string exact_text(T v) {
-  char b[64];
-  const int digits = sizeof(T) == sizeof(float) ? 9 : sizeof(T) == sizeof(double) ? 17 : 21;
-  std::snprintf(b, sizeof b, "%.*Lg", digits, static_cast<long double>(v));
-  return b;
-}
 
 template <class T>
 class TypedLogStates final : public LogStates {
@@ -53,17 +40,18 @@ class TypedLogStates final : public LogStates {
 
   Result<TimePoint> parse_time(const std::string& text, const char* what) const override {
     const T end = replay_->final_time();
-    if (text == "end") return TimePoint{static_cast<long double>(end), true};
-    char* stop = nullptr;
-    errno = 0;
-    const T v = parse_number(text.c_str(), &stop, T{});
-    if (text.empty() || stop != text.c_str() + text.size() || !std::isfinite(double(v)) || errno == ERANGE)
-      return Error{std::string(what) + " '" + text + "' is not a number (a time such as 0.5 or 1e-3, or 'end')"};
-    if (v < T(0)) return Error{std::string(what) + " '" + text + "' is negative"};
-    if (v > end)
-      return Error{log_->path() + ": " + what + " " + text + " is after the end of the log (t = " + exact_text(end) +
+    const tools::ReadTime<T> t = tools::read_time<T>(text);
+    switch (t.kind) {
+      case tools::TimeText::End: return TimePoint{static_cast<long double>(end), true};
+      case tools::TimeText::NotANumber:
+        return Error{std::string(what) + " '" + text + "' is not a number (a time such as 0.5 or 1e-3, or 'end')"};
+      case tools::TimeText::Negative: return Error{std::string(what) + " '" + text + "' is negative"};
+      case tools::TimeText::Number: break;
+    }
+    if (t.value > end)
+      return Error{log_->path() + ": " + what + " " + text + " is after the end of the log (t = " + tools::exact(end) +
                    (log_->complete() ? "" : "; the log is incomplete") + "); 'end' gives the last state"};
-    return TimePoint{static_cast<long double>(v), false};
+    return TimePoint{static_cast<long double>(t.value), false};
   }
 
   TimePoint between(const TimePoint& a, const TimePoint& b, long double fraction) const override {
@@ -105,7 +93,7 @@ class TypedLogStates final : public LogStates {
     return f;
   }
 
-  std::string time_text(long double t) const override { return exact_text(static_cast<T>(t)); }
+  std::string time_text(long double t) const override { return tools::exact(static_cast<T>(t)); }
 
  private:
   static double wrap(double v, double l) {

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <string>
 
+#include "command_line.hpp"
 #include "render.hpp"
 
 namespace {
@@ -74,11 +75,7 @@ int main(int argc, char** argv) {
                  "--color displacement: the displacement at the top of the colour scale (default: the 95th "
                  "percentile of the unmarked disks'; movies: at the last frame)")
       ->check(CLI::PositiveNumber);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;
-  }
+  if (const auto stop = ede::tools::parse_command_line(app, argc, argv)) return *stop;
   opt.colour = colour == "speed" ? ColourBy::Speed : colour == "displacement" ? ColourBy::Displacement : ColourBy::Species;
   return check_and_run(opt, app);
 }

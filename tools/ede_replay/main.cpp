@@ -12,10 +12,10 @@
 // case reads `ede-replay run.ede --at 5`. Exit status: 0 success (verify: identical; diff: identical),
 // 1 an unreadable log or a difference found, 2 a bad command line.
 #include <CLI/CLI.hpp>
-#include <cstdio>
 #include <string>
 #include <vector>
 
+#include "command_line.hpp"
 #include "replay_tool.hpp"
 
 int main(int argc, char** argv) {
@@ -30,19 +30,7 @@ int main(int argc, char** argv) {
   };
 
   // `ede-replay LOG --at T` is `ede-replay state LOG --at T`.
-  std::vector<char*> args(argv, argv + argc);
-  std::string state = "state";
-  if (argc > 1) {
-    const std::string first = argv[1];
-    bool known = first == "-h" || first == "--help";
-    for (const auto& [name, run] : commands) known = known || first == name;
-    if (!known) args.insert(args.begin() + 1, state.data());
-  }
-  try {
-    app.parse(int(args.size()), args.data());
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;
-  }
+  if (const auto stop = ede::tools::parse_command_line(app, argc, argv, "state")) return *stop;
   for (const auto& [name, run] : commands)
     if (app.got_subcommand(name)) return run();
   return usage_error("give a log, or a subcommand");

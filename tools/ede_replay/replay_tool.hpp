@@ -1,25 +1,23 @@
 // What the ede-replay subcommands share: registration, messages, exact numbers, event rows and comparison.
 //
 // Each subcommand lives in its own file and registers itself on the CLI11 app with add_*_command, which
-// returns the function main calls once the command line is parsed. Numbers are printed with the digits
-// that read back to the identical value of the log's scalar type (float 9, double 17, long double 21),
-// like the state CSV, and parsed with the matching strto* so a time typed by a user means exactly that
-// value of T; comparisons are bitwise.
+// returns the function main calls once the command line is parsed. Numbers are printed and times typed
+// by a user read exactly in the log's scalar type (exact_text.hpp); comparisons are bitwise.
 #pragma once
 
 #include <CLI/CLI.hpp>
-#include <cerrno>
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "ede/event.hpp"
 #include "ede/log_reader.hpp"
 #include "ede/replay.hpp"
+#include "exact_text.hpp"
+#include "output_file.hpp"
 #include "scalar_dispatch.hpp"
 
 namespace ede::replay_tool {
@@ -46,37 +44,16 @@ inline int usage_error(const std::string& message) {
 
 inline Result<std::shared_ptr<LogReader>> open_log(const std::string& path) { return LogReader::open(path); }
 
-// Exact text of a scalar.
-inline std::string exact(float v) {
-  char b[48];
-  std::snprintf(b, sizeof b, "%.9g", double(v));
-  return b;
-}
-inline std::string exact(double v) {
-  char b[48];
-  std::snprintf(b, sizeof b, "%.17g", v);
-  return b;
-}
-inline std::string exact(long double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.21Lg", v);
-  return b;
-}
-
-inline float parse_number(const char* s, char** end, float) { return std::strtof(s, end); }
-inline double parse_number(const char* s, char** end, double) { return std::strtod(s, end); }
-inline long double parse_number(const char* s, char** end, long double) { return std::strtold(s, end); }
+using tools::exact;   // the digits that read back to the same value of T (exact_text.hpp)
+using tools::Output;  // -o FILE, or stdout (output_file.hpp)
 
 // A time given on the command line, read exactly in T: the whole text must be one finite number >= 0.
 template <class T>
 Result<T> parse_time(const std::string& text, const char* what) {
-  char* end = nullptr;
-  errno = 0;
-  const T v = parse_number(text.c_str(), &end, T{});
-  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(double(v)) || errno == ERANGE)
-    return Error{std::string(what) + " '" + text + "' is not a number (a time such as 0.5 or 1e-3)"};
-  if (v < T(0)) return Error{std::string(what) + " '" + text + "' is negative"};
-  return v;
+  const std::optional<T> v = tools::parse_exact<T>(text);
+  if (!v) return Error{std::string(what) + " '" + text + "' is not a number (a time such as 0.5 or 1e-3)"};
+  if (*v < T(0)) return Error{std::string(what) + " '" + text + "' is negative"};
+  return *v;
 }
 
 // Bitwise equality of two scalars (long double: its 10 significant bytes, not the padding).
@@ -147,35 +124,5 @@ std::string first_difference(const ReplayedEvent<T>& a, const ReplayedEvent<T>& 
   if (a.kind == EventKind::Pair && !same_bits(a.vjy, b.vjy)) return "vjy";
   return "";
 }
-
-// An output file, or stdout when the path is empty; close() reports write errors.
-class Output {
- public:
-  explicit Output(const std::string& path) : path_(path) {
-    file_ = path.empty() ? stdout : std::fopen(path.c_str(), "w");
-    if (!file_) error_ = "cannot write '" + path + "': " + std::strerror(errno);
-  }
-  ~Output() {
-    if (file_ && file_ != stdout) std::fclose(file_);
-  }
-  Output(const Output&) = delete;
-  Output& operator=(const Output&) = delete;
-
-  std::FILE* file() const { return file_; }
-  const std::string& error() const { return error_; }
-  Status close() {
-    const bool failed = std::ferror(file_) != 0;
-    const int closed = file_ == stdout ? std::fflush(file_) : std::fclose(file_);
-    if (file_ != stdout) file_ = nullptr;
-    if (failed || closed != 0)
-      return Error{"error while writing '" + (path_.empty() ? std::string("<stdout>") : path_) + "'"};
-    return Ok{};
-  }
-
- private:
-  std::string path_;
-  std::FILE* file_ = nullptr;
-  std::string error_;
-};
 
 }  // namespace ede::replay_tool

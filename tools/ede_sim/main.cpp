@@ -22,6 +22,7 @@
 #include "ede/run_summary.hpp"
 #include "ede/scene_loader.hpp"
 #include "ede/setup.hpp"
+#include "command_line.hpp"
 #include "ede/state_csv.hpp"
 #include "progress.hpp"
 #include "scalar_dispatch.hpp"
@@ -201,7 +202,7 @@ int main(int argc, char** argv) {
   app.add_flag("--json", opt.json, "print the summary as one JSON object on stdout");
   app.add_option("--final-state", opt.final_state_path, "write the final state as CSV (exact numbers)");
   app.add_flag("-q,--quiet", opt.quiet, "no progress output");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto stop = ede::tools::parse_command_line(app, argc, argv)) return *stop;
   if (opt.resume_path.empty() == opt.scene_path.empty())
     return std::fprintf(stderr, "ede-sim: give either a scene file or --resume LOG\n"), 2;
   if (!opt.resume_path.empty() && (!opt.log_path.empty() || !opt.overrides.empty()))

@@ -36,13 +36,13 @@ std::string csv_of(const LogSeries& s, const std::vector<SpeedClasses>& classes)
     std::string rate, free_time;
     if (k > 0 && s.time[k] > s.time[k - 1]) {
       const double r = (s.collisions_per_particle(k) - s.collisions_per_particle(k - 1)) / (s.time[k] - s.time[k - 1]);
-      rate = num(r);
-      free_time = r > 0 ? num(1 / r) : "inf";
+      rate = exact(r);
+      free_time = r > 0 ? exact(1 / r) : "inf";
     }
     const SpeedClasses& c = classes[k];
-    text += num(s.time[k]) + "," + std::to_string(s.pair_collisions[k]) + "," + std::to_string(s.wall_collisions[k]) +
-            "," + num(s.collisions_per_particle(k)) + "," + rate + "," + free_time + "," + num(c.slow_percent) + "," +
-            num(c.medium_percent) + "," + num(c.fast_percent) + "\n";
+    text += exact(s.time[k]) + "," + std::to_string(s.pair_collisions[k]) + "," + std::to_string(s.wall_collisions[k]) +
+            "," + exact(s.collisions_per_particle(k)) + "," + rate + "," + free_time + "," + exact(c.slow_percent) +
+            "," + exact(c.medium_percent) + "," + exact(c.fast_percent) + "\n";
   }
   return text;
 }
@@ -51,34 +51,32 @@ void report(const std::string& path, const LogOverview& o, const LogSeries& s, c
             double reference_speed) {
   const std::size_t last = s.time.size() - 1;
   const double t = s.time[last];
-  std::printf("log                     %s (%zu disks, t = 0 to %s)\n", path.c_str(), o.disks, short_num(t).c_str());
+  std::printf("log                     %s (%zu disks, t = 0 to %s)\n", path.c_str(), o.disks, brief(t).c_str());
   std::printf("pair collisions         %llu (%s per disk)\n", static_cast<unsigned long long>(s.pair_collisions[last]),
-              short_num(s.collisions_per_particle(last)).c_str());
+              brief(s.collisions_per_particle(last)).c_str());
   std::printf("wall collisions         %llu\n", static_cast<unsigned long long>(s.wall_collisions[last]));
   if (t > 0)
     std::printf("collision rate          %s per disk per unit time (average over the run)\n",
-                short_num(s.collisions_per_particle(last) / t).c_str());
-  std::printf("mean free time          %s (N t / 2 pairs)\n", short_num(o.mean_free_time()).c_str());
+                brief(s.collisions_per_particle(last) / t).c_str());
+  std::printf("mean free time          %s (N t / 2 pairs)\n", brief(o.mean_free_time()).c_str());
   std::printf("speed classes           v_ref = %s (initial mean speed): slow < %s, fast > %s\n",
-              short_num(reference_speed).c_str(), short_num(0.5 * reference_speed).c_str(),
-              short_num(1.5 * reference_speed).c_str());
+              brief(reference_speed).c_str(), brief(0.5 * reference_speed).c_str(),
+              brief(1.5 * reference_speed).c_str());
   for (const std::size_t k : {std::size_t(0), last})
-    std::printf("  t = %-18s slow %5.1f%%  medium %5.1f%%  fast %5.1f%%\n", short_num(s.time[k]).c_str(),
-                c[k].slow_percent, c[k].medium_percent, c[k].fast_percent);
+    std::printf("  t = %-18s slow %5.1f%%  medium %5.1f%%  fast %5.1f%%\n", brief(s.time[k]).c_str(), c[k].slow_percent,
+                c[k].medium_percent, c[k].fast_percent);
 }
 
 int run_collisions(const CollisionOptions& opt) {
   if (opt.every && !(*opt.every > 0)) return usage_error("collisions: --every must be > 0");
-  auto opened = open_log(opt.log);
+  auto opened = open_log_overview(opt.log);
   if (!opened) return fail(opened.error().message);
-  const std::shared_ptr<LogReader>& log = opened.value();
-  auto overview = log_overview(log);
-  if (!overview) return fail(overview.error().message);
-  const double end = overview.value().end_time;
+  const std::shared_ptr<LogReader>& log = opened.value().log;
+  const LogOverview& overview = opened.value().overview;
+  const double end = overview.end_time;
   const double every = opt.every.value_or(end > 0 ? end / 100 : 1);
-  std::vector<double> times = time_grid(0, end, every, 1'000'000);
-  if (times.empty()) return usage_error("collisions: --every " + short_num(every) + " gives more than a million times");
-  if (times.back() < end) times.push_back(end);
+  const std::vector<double> times = grid_to_end(end, every, 1'000'000);
+  if (times.empty()) return usage_error("collisions: --every " + brief(every) + " gives more than a million times");
 
   auto series = log_series(log, times);
   if (!series) return fail(series.error().message);
@@ -89,15 +87,14 @@ int run_collisions(const CollisionOptions& opt) {
     classes.push_back(speed_classes(snap, reference));
   });
   if (!s) return fail(s.error().message);
-  report(log->path(), overview.value(), series.value(), classes, reference);
+  report(log->path(), overview, series.value(), classes, reference);
 
-  std::unique_ptr<TempFile> temp;
-  auto path = write_csv(opt.output, !opt.plot.empty(), csv_of(series.value(), classes), temp);
-  if (!path) return fail(path.error().message);
-  if (opt.plot.empty()) return 0;
-  if (Status p = plot("plot_collisions.py", {path.value(), opt.plot}); !p) return fail(p.error().message);
-  std::printf("figure                  %s\n", opt.plot.c_str());
-  return 0;
+  return write_csv_and_plot({.output = opt.output,
+                             .plot = opt.plot,
+                             .csv = csv_of(series.value(), classes),
+                             .script = "plot_collisions.py",
+                             .args = {opt.plot},
+                             .figure_label = "figure                  "});
 }
 
 }  // namespace

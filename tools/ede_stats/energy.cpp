@@ -59,12 +59,12 @@ Result<std::vector<double>> grid_for(const EnergyOptions& opt, const LogOverview
   const double tau = o.mean_free_time();
   double dt = opt.dt.value_or(std::isfinite(tau) ? tau / 20 : end / 1000);
   if (!(dt > 0)) dt = 1;  // a log that ends at t = 0: the grid is {0}
-  grid = time_grid(0, end, dt, kMaxPoints);
-  if (grid.empty()) return Error{"the grid of spacing " + short_num(dt) + " has more than " +
-                                 std::to_string(kMaxPoints) + " points; give a larger --dt or --points K"};
-  if (grid.back() < end) grid.push_back(end);
-  text = std::to_string(grid.size()) + " points, dt = " + short_num(dt) +
-         (opt.dt ? "" : " (1/20 of the mean free time " + short_num(tau) + ")");
+  grid = grid_to_end(end, dt, kMaxPoints);
+  if (grid.empty())
+    return Error{"the grid of spacing " + brief(dt) + " has more than " + std::to_string(kMaxPoints) +
+                 " points; give a larger --dt or --points K"};
+  text = std::to_string(grid.size()) + " points, dt = " + brief(dt) +
+         (opt.dt ? "" : " (1/20 of the mean free time " + brief(tau) + ")");
   return grid;
 }
 
@@ -73,7 +73,7 @@ void label_runs(std::vector<Run>& runs) {
   for (Run& r : runs) {
     int same = 0;
     for (const Run& o : runs) same += (o.restitution == r.restitution) ? 1 : 0;
-    r.label = std::isnan(r.restitution) ? r.path : "ξ = " + short_num(r.restitution);
+    r.label = std::isnan(r.restitution) ? r.path : "ξ = " + brief(r.restitution);
     if (same > 1) r.label += " (" + r.path.substr(r.path.find_last_of('/') + 1) + ")";
   }
 }
@@ -95,11 +95,13 @@ std::string csv_of(const std::vector<Run>& runs) {
     const LogSeries& s = r.series;
     const double e0 = s.kinetic_energy.empty() ? 0 : s.kinetic_energy.front();
     for (std::size_t k = 0; k < s.time.size(); ++k) {
-      text += r.label + "," + num(r.restitution) + "," + num(s.time[k]) + "," + num(s.kinetic_energy[k]) + "," +
-              (e0 > 0 ? num(s.kinetic_energy[k] / e0) : "") + "," + num(s.mean_kinetic_energy(k));
+      text += r.label + "," + exact(r.restitution) + "," + exact(s.time[k]) + "," + exact(s.kinetic_energy[k]) + "," +
+              (e0 > 0 ? exact(s.kinetic_energy[k] / e0) : "") + "," + exact(s.mean_kinetic_energy(k));
       for (const std::string& n : names) {
         const auto it = std::find(s.species_names.begin(), s.species_names.end(), n);
-        text += "," + (it == s.species_names.end() ? "" : num(s.species_mean_energy(std::size_t(it - s.species_names.begin()), k)));
+        text += "," + (it == s.species_names.end()
+                           ? ""
+                           : exact(s.species_mean_energy(std::size_t(it - s.species_names.begin()), k)));
       }
       text += "\n";
     }
@@ -111,15 +113,15 @@ void report(const Run& r) {
   const LogSeries& s = r.series;
   const double e0 = s.kinetic_energy.front(), e1 = s.kinetic_energy.back();
   std::printf("%s  (%s, %llu disks)\n", r.label.c_str(), r.path.c_str(), static_cast<unsigned long long>(s.disks()));
-  std::printf("  grid            %s, t = 0 to %s\n", r.grid_text.c_str(), short_num(s.time.back()).c_str());
-  std::printf("  kinetic energy  E(0) = %s, E(end) = %s, E(end)/E(0) = %s\n", short_num(e0).c_str(),
-              short_num(e1).c_str(), e0 > 0 ? short_num(e1 / e0).c_str() : "-");
+  std::printf("  grid            %s, t = 0 to %s\n", r.grid_text.c_str(), brief(s.time.back()).c_str());
+  std::printf("  kinetic energy  E(0) = %s, E(end) = %s, E(end)/E(0) = %s\n", brief(e0).c_str(), brief(e1).c_str(),
+              e0 > 0 ? brief(e1 / e0).c_str() : "-");
   for (std::size_t sp = 0; sp < s.species_names.size() && s.species_names.size() > 1; ++sp)
-    std::printf("  %-15s <E> from %s to %s\n", s.species_names[sp].c_str(), short_num(s.species_mean_energy(sp, 0)).c_str(),
-                short_num(s.species_mean_energy(sp, s.time.size() - 1)).c_str());
+    std::printf("  %-15s <E> from %s to %s\n", s.species_names[sp].c_str(), brief(s.species_mean_energy(sp, 0)).c_str(),
+                brief(s.species_mean_energy(sp, s.time.size() - 1)).c_str());
   double drift = 0;
   for (const double e : s.kinetic_energy) drift = std::max(drift, e0 > 0 ? std::abs(e / e0 - 1) : 0.0);
-  if (r.restitution == 1) std::printf("  conservation    max |E(t)/E(0) - 1| = %s\n", short_num(drift).c_str());
+  if (r.restitution == 1) std::printf("  conservation    max |E(t)/E(0) - 1| = %s\n", brief(drift).c_str());
 }
 
 int run_energy(const EnergyOptions& opt) {
@@ -127,30 +129,27 @@ int run_energy(const EnergyOptions& opt) {
   if (opt.dt && !(*opt.dt > 0)) return usage_error("energy: --dt must be > 0");
   std::vector<Run> runs;
   for (const std::string& path : opt.logs) {
-    auto opened = open_log(path);
+    auto opened = open_log_overview(path);
     if (!opened) return fail(opened.error().message);
     Run r;
     r.path = path;
-    r.restitution = restitution_of(*opened.value());
-    auto overview = log_overview(opened.value());
-    if (!overview) return fail(overview.error().message);
-    r.overview = overview.value();
+    r.restitution = restitution_of(*opened.value().log);
+    r.overview = opened.value().overview;
     auto grid = grid_for(opt, r.overview, r.grid_text);
     if (!grid) return fail(path + ": " + grid.error().message);
-    auto series = log_series(opened.value(), grid.value());
+    auto series = log_series(opened.value().log, grid.value());
     if (!series) return fail(series.error().message);
     r.series = std::move(series).value();
     runs.push_back(std::move(r));
   }
   label_runs(runs);
   for (const Run& r : runs) report(r);
-  std::unique_ptr<TempFile> temp;
-  auto path = write_csv(opt.output, !opt.plot.empty(), csv_of(runs), temp);
-  if (!path) return fail(path.error().message);
-  if (opt.plot.empty()) return 0;
-  if (Status p = plot("plot_energy.py", {path.value(), opt.plot}); !p) return fail(p.error().message);
-  std::printf("figure: %s\n", opt.plot.c_str());
-  return 0;
+  return write_csv_and_plot({.output = opt.output,
+                             .plot = opt.plot,
+                             .csv = csv_of(runs),
+                             .script = "plot_energy.py",
+                             .args = {opt.plot},
+                             .figure_label = "figure: "});
 }
 
 }  // namespace

@@ -59,23 +59,23 @@ Result<Times> sample_times(const HistOptions& opt, const LogOverview& o) {
     auto at = parse_time(opt.at.empty() ? "end" : opt.at, "--at", o.end_time);
     if (!at) return at.error();
     t.list = {at.value()};
-    t.text = "t = " + short_num(at.value());
+    t.text = "t = " + brief(at.value());
     return t;
   }
   const double from = opt.from.value_or(0), to = opt.to.value_or(o.end_time);
   if (to > o.end_time)
-    return Error{"--to " + short_num(to) + " is after the end of the log (t = " + num(o.end_time) + ")"};
+    return Error{"--to " + brief(to) + " is after the end of the log (t = " + exact(o.end_time) + ")"};
   t.list = time_grid(from, to, *opt.every, 1'000'000);
   if (t.list.empty())
-    return Error{"--from " + short_num(from) + " --to " + short_num(to) + " --every " + short_num(*opt.every) +
+    return Error{"--from " + brief(from) + " --to " + brief(to) + " --every " + brief(*opt.every) +
                  " gives no time (or more than a million)"};
   t.pooled = t.list.size() > 1;
-  t.text = t.pooled ? "t = " + short_num(t.list.front()) + " to " + short_num(t.list.back()) + " every " +
-                          short_num(*opt.every) + " (" + std::to_string(t.list.size()) + " times pooled)"
-                    : "t = " + short_num(t.list.front());
+  t.text = t.pooled ? "t = " + brief(t.list.front()) + " to " + brief(t.list.back()) + " every " + brief(*opt.every) +
+                          " (" + std::to_string(t.list.size()) + " times pooled)"
+                    : "t = " + brief(t.list.front());
   if (t.pooled && *opt.every < 2 * o.mean_free_time())
-    warn("--every " + short_num(*opt.every) + " is shorter than 2 mean free times (" +
-         short_num(2 * o.mean_free_time()) + "): the pooled samples are not independent");
+    warn("--every " + brief(*opt.every) + " is shorter than 2 mean free times (" + brief(2 * o.mean_free_time()) +
+         "): the pooled samples are not independent");
   return t;
 }
 
@@ -83,8 +83,8 @@ std::string hist_csv(const Histogram& h, const Histogram& h0, const MaxwellBoltz
   const std::vector<double> d = densities(h), d0 = densities(h0);
   std::string text = "bin_left,bin_right,density,count,mb_density,initial_density,initial_count\n";
   for (std::size_t k = 0; k < h.bins(); ++k)
-    text += num(h.edges[k]) + "," + num(h.edges[k + 1]) + "," + num(d[k]) + "," + std::to_string(h.count[k]) + "," +
-            num(mb.bin_density(q, h.edges[k], h.edges[k + 1])) + "," + num(d0[k]) + "," +
+    text += exact(h.edges[k]) + "," + exact(h.edges[k + 1]) + "," + exact(d[k]) + "," + std::to_string(h.count[k]) +
+            "," + exact(mb.bin_density(q, h.edges[k], h.edges[k + 1])) + "," + exact(d0[k]) + "," +
             std::to_string(h0.count[k]) + "\n";
   return text;
 }
@@ -94,12 +94,12 @@ std::string curve_csv(const MaxwellBoltzmann& mb, Quantity q, double hi) {
   constexpr int points = 400;
   for (int k = 0; k <= points; ++k) {
     const double x = hi * k / points;
-    text += num(x) + "," + num(mb.density(q, x)) + "\n";
+    text += exact(x) + "," + exact(mb.density(q, x)) + "\n";
   }
   return text;
 }
 
-std::string p_text(double p) { return p < 1e-300 ? "< 1e-300" : short_num(p); }
+std::string p_text(double p) { return p < 1e-300 ? "< 1e-300" : brief(p); }
 
 void report(const HistOptions& opt, const LogOverview& o, const Times& times, const Sample& now,
             const Sample& initial, const KsResult& ks, const KsResult& ks0, double kT) {
@@ -107,15 +107,15 @@ void report(const HistOptions& opt, const LogOverview& o, const Times& times, co
   std::printf("log              %s (%zu disks)\n", opt.log.c_str(), o.disks);
   std::printf("disks            %s: %zu\n", opt.species.empty() ? "all" : ("species " + opt.species).c_str(), per_time);
   std::printf("times            %s; %zu samples of %s\n", times.text.c_str(), now.values.size(), opt.quantity.c_str());
-  std::printf("kT               %s  (<m v^2/2>, 2D equipartition, k = 1)\n", short_num(kT).c_str());
+  std::printf("kT               %s  (<m v^2/2>, 2D equipartition, k = 1)\n", brief(kT).c_str());
   std::printf("KS vs MB         D = %s, p = %s  (energies against exp(-E/kT)/kT at the measured kT)\n",
-              short_num(ks.statistic).c_str(), p_text(ks.p_value).c_str());
+              brief(ks.statistic).c_str(), p_text(ks.p_value).c_str());
   if (initial.kT() > 0)
-    std::printf("initial (t = 0)  kT = %s, KS vs MB at that kT: D = %s, p = %s\n", short_num(initial.kT()).c_str(),
-                short_num(ks0.statistic).c_str(), p_text(ks0.p_value).c_str());
+    std::printf("initial (t = 0)  kT = %s, KS vs MB at that kT: D = %s, p = %s\n", brief(initial.kT()).c_str(),
+                brief(ks0.statistic).c_str(), p_text(ks0.p_value).c_str());
   else
     std::printf("initial (t = 0)  at rest\n");
-  std::printf("mean free time   %s (from the whole log)\n", short_num(o.mean_free_time()).c_str());
+  std::printf("mean free time   %s (from the whole log)\n", brief(o.mean_free_time()).c_str());
   std::printf("note             kT is fitted from the same sample, which makes p somewhat too large%s\n",
               times.pooled ? "; the pooled times are counted as independent samples, so p is approximate" : "");
 }
@@ -124,12 +124,10 @@ int run_hist(const HistOptions& opt) {
   if ((opt.from || opt.to) && !opt.every) return usage_error("hist: --from and --to need --every DT");
   if (opt.every && !(*opt.every > 0)) return usage_error("hist: --every must be > 0");
   if (opt.bins < 1 || opt.bins > 100000) return usage_error("hist: --bins must be between 1 and 100000");
-  auto opened = open_log(opt.log);
+  auto opened = open_log_overview(opt.log);
   if (!opened) return fail(opened.error().message);
-  const std::shared_ptr<LogReader>& log = opened.value();
-  auto overview = log_overview(log);
-  if (!overview) return fail(overview.error().message);
-  const LogOverview& o = overview.value();
+  const std::shared_ptr<LogReader>& log = opened.value().log;
+  const LogOverview& o = opened.value().overview;
   auto species = species_index(log->header(), opt.species);
   if (!species) return fail(log->path() + ": " + species.error().message);
   auto times = sample_times(opt, o);
@@ -155,24 +153,25 @@ int run_hist(const HistOptions& opt) {
   const std::vector<double> edges = uniform_edges(0, hi > 0 ? hi : 1, opt.bins);
   const Histogram h = make_histogram(now.values, edges), h0 = make_histogram(initial.values, edges);
 
-  std::unique_ptr<TempFile> temp;
-  auto csv = write_csv(opt.output, !opt.plot.empty(), hist_csv(h, h0, mb, q), temp);
-  if (!csv) return fail(csv.error().message);
-  report(opt, o, times.value(), now, initial, ks, ks0, kT);
-  if (opt.plot.empty()) return 0;
-
-  TempFile curve(".csv");
-  std::unique_ptr<TempFile> unused;
-  if (curve.path().empty() || !write_csv(curve.path(), true, curve_csv(mb, q, edges.back()), unused))
-    return fail("cannot write the Maxwell-Boltzmann curve for the figure");
-  const std::string title = std::string(opt.species.empty() ? "all disks" : opt.species) + ", N = " +
-                            std::to_string(now.values.size() / times.value().list.size()) + ", " + times.value().text +
-                            "\nkT = " + short_num(kT) + ", KS D = " + short_num(ks.statistic) +
+  // The Maxwell-Boltzmann curve goes to the figure script as a second CSV.
+  const std::unique_ptr<TempFile> curve = opt.plot.empty() ? nullptr : std::make_unique<TempFile>(".csv");
+  const std::string title = std::string(opt.species.empty() ? "all disks" : opt.species) +
+                            ", N = " + std::to_string(now.values.size() / times.value().list.size()) + ", " +
+                            times.value().text + "\nkT = " + brief(kT) + ", KS D = " + brief(ks.statistic) +
                             " (p = " + p_text(ks.p_value) + ")";
-  if (Status p = plot("plot_hist.py", {csv.value(), curve.path(), opt.plot, opt.quantity, title}); !p)
-    return fail(p.error().message);
-  std::printf("figure           %s\n", opt.plot.c_str());
-  return 0;
+  return write_csv_and_plot(
+      {.output = opt.output,
+       .plot = opt.plot,
+       .csv = hist_csv(h, h0, mb, q),
+       .script = "plot_hist.py",
+       .args = {curve ? curve->path() : "", opt.plot, opt.quantity, title},
+       .figure_label = "figure           ",
+       .after_csv = [&]() -> Status {
+         report(opt, o, times.value(), now, initial, ks, ks0, kT);
+         if (curve && (curve->path().empty() || !write_file(curve->path(), curve_csv(mb, q, edges.back()))))
+           return Error{"cannot write the Maxwell-Boltzmann curve for the figure"};
+         return Ok{};
+       }});
 }
 
 }  // namespace

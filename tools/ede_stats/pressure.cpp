@@ -5,16 +5,14 @@
 // Thin: libede's measure_pressure (pressure.hpp) replays the window once and does the physics and the
 // statistics; this file prints the summary (N, A, phi, kT, P_wall per wall and mean, P_virial, each with
 // its standard error, their ratio Z to the ideal gas, Henderson's equation of state), writes one CSV row
-// per block, and has tools/plot/plot_pressure.py draw the blocks from that CSV.
+// per block, and has tools/plot/plot_pressure.py draw the blocks from that CSV (the tail every ede-stats
+// subcommand shares, stats_cli.hpp).
 // Exit status: 0 success (warnings go to stderr), 1 an unreadable log or an impossible window, 2 a bad
 // command line. Rejected: printing the CSV on stdout when -o is absent, which would mix it with the
 // summary a user reads.
-#include <unistd.h>
-
-#include <cerrno>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <memory>
 #include <optional>
@@ -23,7 +21,7 @@
 
 #include "ede/log_reader.hpp"
 #include "ede/pressure.hpp"
-#include "plot_runner.hpp"
+#include "stats_cli.hpp"
 #include "stats_tool.hpp"
 
 namespace ede::stats_tool {
@@ -37,16 +35,7 @@ struct PressureCliOptions {
   double equilibration = 20;
 };
 
-int fail(const std::string& message) {
-  std::fprintf(stderr, "ede-stats: error: %s\n", message.c_str());
-  return 1;
-}
-
-int usage_error(const std::string& message) {
-  std::fprintf(stderr, "ede-stats pressure: %s (see ede-stats pressure --help)\n", message.c_str());
-  return 2;
-}
-
+// For the summary: 6 digits unless told otherwise; NaN (no value) as "n/a".
 std::string num(double v, const char* format = "%.6g") {
   if (std::isnan(v)) return "n/a";
   char b[48];
@@ -55,7 +44,7 @@ std::string num(double v, const char* format = "%.6g") {
 }
 
 // Exact digits for the CSV (a double reads back identical); NaN as an empty field.
-std::string exact(double v) { return std::isnan(v) ? "" : num(v, "%.17g"); }
+using tools::exact_cell;
 
 std::string pm(const BlockStats& s) { return num(s.mean) + " ± " + num(s.error, "%.2g"); }
 
@@ -120,42 +109,38 @@ void print_results(const PressureReport& r) {
 constexpr const char* kCsvHeader =
     "block,t0,t1,kT,P_left,P_right,P_bottom,P_top,P_wall,P_virial,Z_wall,Z_virial,pair_collisions,wall_collisions\n";
 
-Status write_csv(const PressureReport& r, const std::string& path) {
-  std::FILE* f = std::fopen(path.c_str(), "w");
-  if (!f) return Error{"cannot write '" + path + "': " + std::strerror(errno)};
-  std::fputs(kCsvHeader, f);
-  const auto wall = [&](const PressureSeries& s, std::size_t k) { return r.has_walls() ? exact(s.block[k]) : ""; };
+std::string csv_of(const PressureReport& r) {
+  std::string text = kCsvHeader;
+  const auto wall = [&](const PressureSeries& s, std::size_t k) { return r.has_walls() ? exact_cell(s.block[k]) : ""; };
   for (std::size_t k = 0; k < r.blocks; ++k) {
-    std::string row = std::to_string(k) + "," + exact(r.block_t0[k]) + "," + exact(r.block_t1[k]) + "," +
-                      exact(r.kT.block[k]);
-    for (std::size_t w = 0; w < 4; ++w) row += "," + wall(r.wall[w], k);
-    row += "," + wall(r.wall_mean, k) + "," + exact(r.virial.block[k]) + "," + wall(r.z_wall, k) + "," +
-           exact(r.z_virial.block[k]) + "," + std::to_string(r.block_pair_collisions[k]) + "," +
-           std::to_string(r.block_wall_collisions[k]) + "\n";
-    std::fputs(row.c_str(), f);
+    text += std::to_string(k) + "," + exact_cell(r.block_t0[k]) + "," + exact_cell(r.block_t1[k]) + "," +
+            exact_cell(r.kT.block[k]);
+    for (std::size_t w = 0; w < 4; ++w) text += "," + wall(r.wall[w], k);
+    text += "," + wall(r.wall_mean, k) + "," + exact_cell(r.virial.block[k]) + "," + wall(r.z_wall, k) + "," +
+            exact_cell(r.z_virial.block[k]) + "," + std::to_string(r.block_pair_collisions[k]) + "," +
+            std::to_string(r.block_wall_collisions[k]) + "\n";
   }
-  const bool failed = std::ferror(f) != 0;
-  if (std::fclose(f) != 0 || failed) return Error{"error while writing '" + path + "'"};
-  return Ok{};
+  return text;
 }
 
-Status draw(const PressureReport& r, const std::string& csv, const std::string& plot, const std::string& log) {
+// The figure script's arguments after the CSV's path.
+std::vector<std::string> figure_args(const PressureReport& r, const std::string& plot, const std::string& log) {
   const double to_box = r.area / r.expected_area();
-  std::vector<std::string> args = {csv,
-                                   plot,
+  std::vector<std::string> args = {plot,
                                    "--ideal",
-                                   exact(r.ideal() * to_box),
+                                   exact_cell(r.ideal() * to_box),
                                    "--henderson",
-                                   exact(r.henderson() * to_box),
+                                   exact_cell(r.henderson() * to_box),
                                    "--virial",
-                                   exact(r.virial.stats.mean),
-                                   exact(r.virial.stats.error),
+                                   exact_cell(r.virial.stats.mean),
+                                   exact_cell(r.virial.stats.error),
                                    "--title",
-                                   log + ": N = " + std::to_string(r.disks) + ", phi = " + num(r.packing_fraction, "%.4g") +
-                                       ", " + to_string(r.boundary)};
+                                   log + ": N = " + std::to_string(r.disks) + ", phi = " +
+                                       num(r.packing_fraction, "%.4g") + ", " + to_string(r.boundary)};
   if (r.has_walls())
-    args.insert(args.end(), {"--wall", exact(r.wall_mean.stats.mean), exact(r.wall_mean.stats.error), "--walled"});
-  return tools::run_plot_script("plot_pressure.py", args);
+    args.insert(args.end(),
+                {"--wall", exact_cell(r.wall_mean.stats.mean), exact_cell(r.wall_mean.stats.error), "--walled"});
+  return args;
 }
 
 std::string base_name(const std::string& path) {
@@ -174,34 +159,16 @@ bool plot_extension_ok(const std::string& path) {
   return ends(".png") || ends(".svg");
 }
 
-// The CSV for the plot: the -o file, or a temporary one removed afterwards.
-int write_outputs(const PressureReport& r, const PressureCliOptions& opt) {
-  std::string csv = opt.csv;
-  bool temporary = false;
-  if (csv.empty() && !opt.plot.empty()) {
-    char name[] = "/tmp/ede-pressure-XXXXXX";
-    const int fd = mkstemp(name);
-    if (fd < 0) return fail("cannot create a temporary file for the plot's data");
-    close(fd);
-    csv = name, temporary = true;
-  }
-  Status done = csv.empty() ? Status(Ok{}) : write_csv(r, csv);
-  if (done && !opt.plot.empty()) done = draw(r, csv, opt.plot, base_name(opt.log));
-  if (temporary) std::remove(csv.c_str());
-  return done ? 0 : fail(done.error().message);
-}
-
 int run_pressure(const PressureCliOptions& opt) {
-  if (opt.blocks < 2) return usage_error("--blocks must be at least 2 (an error needs several blocks)");
+  if (opt.blocks < 2) return usage_error("--blocks must be at least 2 (an error needs several blocks)", "pressure");
   if (opt.bins < 1 || opt.blocks * opt.bins > 10'000'000)
-    return usage_error("--bins must be at least 1, and blocks x bins at most 10^7");
+    return usage_error("--bins must be at least 1, and blocks x bins at most 10^7", "pressure");
   if (!opt.plot.empty() && !plot_extension_ok(opt.plot))
-    return usage_error("--plot wants a file name ending in .png or .svg, not '" + opt.plot + "'");
+    return usage_error("--plot wants a file name ending in .png or .svg, not '" + opt.plot + "'", "pressure");
   auto log = LogReader::open(opt.log);
   if (!log) return fail(log.error().message);
   if (!log.value()->complete())
-    std::fprintf(stderr, "ede-stats: warning: %s is incomplete (%s); using what it holds\n", opt.log.c_str(),
-                 log.value()->incomplete_reason().c_str());
+    warn(opt.log + " is incomplete (" + log.value()->incomplete_reason() + "); using what it holds");
   PressureOptions o;
   o.from = opt.from, o.to = opt.to;
   o.blocks = opt.blocks, o.bins_per_block = opt.bins;
@@ -212,8 +179,13 @@ int run_pressure(const PressureCliOptions& opt) {
   print_system(r, opt.log);
   print_results(r);
   std::fflush(stdout);
-  for (const std::string& w : r.warnings) std::fprintf(stderr, "ede-stats: warning: %s\n", w.c_str());
-  return write_outputs(r, opt);
+  for (const std::string& w : r.warnings) warn(w);
+  if (opt.csv.empty() && opt.plot.empty()) return 0;
+  return write_csv_and_plot({.output = opt.csv,
+                             .plot = opt.plot,
+                             .csv = csv_of(r),
+                             .script = "plot_pressure.py",
+                             .args = figure_args(r, opt.plot, base_name(opt.log))});
 }
 
 }  // namespace

@@ -30,38 +30,35 @@ constexpr const char* kSpeciesCsvHeader =
 std::string csv_rows(double t, const std::vector<SpeciesStats>& stats) {
   std::string text;
   for (const SpeciesStats& s : stats)
-    text += num(t) + "," + s.name + "," + std::to_string(s.n) + "," + num(s.mass_min) + "," + num(s.mass_max) + "," +
-            num(s.mean_speed) + "," + num(s.mean_kinetic_energy) + "," + num(s.kT) + "," + num(s.mean_speed_error) +
-            "," + num(s.mean_kinetic_energy_error) + "\n";
+    text += exact(t) + "," + s.name + "," + std::to_string(s.n) + "," + exact(s.mass_min) + "," + exact(s.mass_max) +
+            "," + exact(s.mean_speed) + "," + exact(s.mean_kinetic_energy) + "," + exact(s.kT) + "," +
+            exact(s.mean_speed_error) + "," + exact(s.mean_kinetic_energy_error) + "\n";
   return text;
 }
 
 std::string mass_text(const SpeciesStats& s) {
-  return s.mass_min == s.mass_max ? short_num(s.mass_min) : short_num(s.mass_min) + "-" + short_num(s.mass_max);
+  return s.mass_min == s.mass_max ? brief(s.mass_min) : brief(s.mass_min) + "-" + brief(s.mass_max);
 }
 
 void print_table(double t, const std::vector<SpeciesStats>& stats) {
-  std::printf("t = %s\n", short_num(t).c_str());
+  std::printf("t = %s\n", brief(t).c_str());
   std::printf("  %-14s %10s %15s %13s %13s %13s\n", "species", "N", "mass", "mean speed", "mean KE", "kT");
   for (const SpeciesStats& s : stats)
     std::printf("  %-14s %10llu %15s %13s %13s %13s\n", s.name.c_str(), static_cast<unsigned long long>(s.n),
-                mass_text(s).c_str(), short_num(s.mean_speed).c_str(), short_num(s.mean_kinetic_energy).c_str(),
-                short_num(s.kT).c_str());
+                mass_text(s).c_str(), brief(s.mean_speed).c_str(), brief(s.mean_kinetic_energy).c_str(),
+                brief(s.kT).c_str());
 }
 
 int run_species(const SpeciesOptions& opt) {
   if (opt.every && !(*opt.every > 0)) return usage_error("species: --every must be > 0");
-  auto opened = open_log(opt.log);
+  auto opened = open_log_overview(opt.log);
   if (!opened) return fail(opened.error().message);
-  const std::shared_ptr<LogReader>& log = opened.value();
-  auto overview = log_overview(log);
-  if (!overview) return fail(overview.error().message);
-  const double end = overview.value().end_time;
+  const std::shared_ptr<LogReader>& log = opened.value().log;
+  const double end = opened.value().overview.end_time;
   std::vector<double> times;
   if (opt.every) {
-    times = time_grid(0, end, *opt.every, 100'000);
-    if (times.empty()) return usage_error("species: --every " + short_num(*opt.every) + " gives more than 100000 times");
-    if (times.back() < end) times.push_back(end);
+    times = grid_to_end(end, *opt.every, 100'000);
+    if (times.empty()) return usage_error("species: --every " + brief(*opt.every) + " gives more than 100000 times");
   } else {
     auto at = parse_time(opt.at.empty() ? "end" : opt.at, "--at", end);
     if (!at) return fail(log->path() + ": " + at.error().message);
@@ -76,13 +73,12 @@ int run_species(const SpeciesOptions& opt) {
   if (!s) return fail(s.error().message);
   std::printf("(kT = <m v^2/2>: in 2D, equipartition gives two degrees of freedom of kT/2 each, so kT equals the "
               "mean kinetic energy; k = 1)\n");
-  std::unique_ptr<TempFile> temp;
-  auto path = write_csv(opt.output, !opt.plot.empty(), csv, temp);
-  if (!path) return fail(path.error().message);
-  if (opt.plot.empty()) return 0;
-  if (Status p = plot("plot_species.py", {path.value(), opt.plot}); !p) return fail(p.error().message);
-  std::printf("figure: %s\n", opt.plot.c_str());
-  return 0;
+  return write_csv_and_plot({.output = opt.output,
+                             .plot = opt.plot,
+                             .csv = csv,
+                             .script = "plot_species.py",
+                             .args = {opt.plot},
+                             .figure_label = "figure: "});
 }
 
 }  // namespace
