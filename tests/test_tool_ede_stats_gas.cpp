@@ -122,7 +122,7 @@ TEST_CASE("ede-stats energy: one curve per log labelled by restitution, conserve
   check_figure(figure, "png");
   const std::vector<std::string> rows = lines(read_file(csv));
   REQUIRE(rows.size() == 1 + 2 * 101);
-  CHECK(rows[0] == "label,restitution,time,kinetic_energy,energy_ratio,mean_kinetic_energy,mean_kinetic_energy:gas");
+  CHECK(rows[0] == "label,restitution,time,kinetic_energy,energy_ratio,mean_kinetic_energy,haff_ratio,mean_kinetic_energy:gas");
   CHECK(csv_fields(rows[1])[0] == "ξ = 1");
   CHECK(csv_fields(rows[102])[0] == "ξ = 0.9");
   for (std::size_t k = 1; k <= 101; ++k) CHECK(std::abs(std::stod(csv_fields(rows[k])[4]) - 1) < 1e-12);

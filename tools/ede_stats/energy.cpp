@@ -39,7 +39,32 @@ struct Run {
   LogSeries series;
   double dt = 0;
   std::string grid_text;
+  double haff_tau = std::nan("");  // Haff's cooling time, for an inelastic run (haff_time)
+  double haff_calibration = 0;     // collisions per disk the initial collision frequency was read from
 };
+
+// Haff's law for a homogeneous cooling gas of equal disks (2D): each collision loses on average
+// (1 - xi^2) kT (the collision-weighted mean of (g.n)^2 is 4 kT / m for Maxwell-Boltzmann velocities), so
+// dT/dt = -(1 - xi^2) omega T / 2 with the collision frequency omega proportional to sqrt(T):
+//   E(t) / E(0) = (1 + t / tau)^-2,  tau = 4 / ((1 - xi^2) omega0),
+// and the collisions per disk grow as C(t) = omega0 tau ln(1 + t / tau). The time t1 at which the log
+// reaches C1 collisions per disk then gives omega0 exactly within the model, with no fitted curve:
+//   omega0 = 4 (exp((1 - xi^2) C1 / 4) - 1) / ((1 - xi^2) t1).
+// C1 = 2 (about 2N collisions: a 2% statistical error), or whatever the run reached.
+void haff_time(Run& r) {
+  const double a = 1 - r.restitution * r.restitution;
+  const LogSeries& s = r.series;
+  if (!(a > 0) || s.time.size() < 2) return;
+  std::size_t k = 1;
+  while (k + 1 < s.time.size() && s.collisions_per_particle(k) < 2) ++k;
+  const double c1 = s.collisions_per_particle(k), t1 = s.time[k];
+  if (!(c1 > 0) || !(t1 > 0)) return;
+  const double omega0 = 4 * std::expm1(a * c1 / 4) / (a * t1);
+  r.haff_tau = 4 / (a * omega0);
+  r.haff_calibration = c1;
+}
+
+double haff_ratio(const Run& r, double t) { return 1 / ((1 + t / r.haff_tau) * (1 + t / r.haff_tau)); }
 
 double restitution_of(const LogReader& log) {
   auto scene = parse_scene_text(log.header().scene_text, log.header().scene_name);
@@ -88,7 +113,7 @@ std::vector<std::string> species_union(const std::vector<Run>& runs) {
 
 std::string csv_of(const std::vector<Run>& runs) {
   const std::vector<std::string> names = species_union(runs);
-  std::string text = "label,restitution,time,kinetic_energy,energy_ratio,mean_kinetic_energy";
+  std::string text = "label,restitution,time,kinetic_energy,energy_ratio,mean_kinetic_energy,haff_ratio";
   for (const std::string& n : names) text += ",mean_kinetic_energy:" + n;
   text += "\n";
   for (const Run& r : runs) {
@@ -96,7 +121,8 @@ std::string csv_of(const std::vector<Run>& runs) {
     const double e0 = s.kinetic_energy.empty() ? 0 : s.kinetic_energy.front();
     for (std::size_t k = 0; k < s.time.size(); ++k) {
       text += r.label + "," + exact(r.restitution) + "," + exact(s.time[k]) + "," + exact(s.kinetic_energy[k]) + "," +
-              (e0 > 0 ? exact(s.kinetic_energy[k] / e0) : "") + "," + exact(s.mean_kinetic_energy(k));
+              (e0 > 0 ? exact(s.kinetic_energy[k] / e0) : "") + "," + exact(s.mean_kinetic_energy(k)) + "," +
+              (std::isnan(r.haff_tau) ? "" : exact(haff_ratio(r, s.time[k])));
       for (const std::string& n : names) {
         const auto it = std::find(s.species_names.begin(), s.species_names.end(), n);
         text += "," + (it == s.species_names.end()
@@ -122,6 +148,11 @@ void report(const Run& r) {
   double drift = 0;
   for (const double e : s.kinetic_energy) drift = std::max(drift, e0 > 0 ? std::abs(e / e0 - 1) : 0.0);
   if (r.restitution == 1) std::printf("  conservation    max |E(t)/E(0) - 1| = %s\n", brief(drift).c_str());
+  if (!std::isnan(r.haff_tau))
+    std::printf("  Haff's law      tau = %s (initial collision frequency from the first %s collisions per disk); "
+                "at the end E/E(0) = %s against (1 + t/tau)^-2 = %s\n",
+                brief(r.haff_tau).c_str(), brief(r.haff_calibration).c_str(), e0 > 0 ? brief(e1 / e0).c_str() : "-",
+                brief(haff_ratio(r, s.time.back())).c_str());
 }
 
 int run_energy(const EnergyOptions& opt) {
@@ -140,6 +171,7 @@ int run_energy(const EnergyOptions& opt) {
     auto series = log_series(opened.value().log, grid.value());
     if (!series) return fail(series.error().message);
     r.series = std::move(series).value();
+    haff_time(r);
     runs.push_back(std::move(r));
   }
   label_runs(runs);
@@ -163,7 +195,8 @@ Command add_energy_command(CLI::App& app) {
   auto* points = cmd->add_option("--points", opt->points, "K grid points from 0 to the end instead");
   dt->excludes(points);
   cmd->add_option("-o,--output", opt->output,
-                  "write CSV: label,restitution,time,kinetic_energy,energy_ratio,mean_kinetic_energy, then "
+                  "write CSV: label,restitution,time,kinetic_energy,energy_ratio,mean_kinetic_energy,haff_ratio (Haff's "
+                  "law for inelastic runs), then "
                   "mean_kinetic_energy:SPECIES per species");
   cmd->add_option("--plot", opt->plot, "draw E(t)/E(0) per log into FILE.png or FILE.svg");
   return [opt] { return run_energy(*opt); };
