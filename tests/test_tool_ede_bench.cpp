@@ -18,3 +18,17 @@ TEST_CASE("ede-bench: a bad command line exits with status 2 and CLI11's message
   CHECK(run_tool("ede-bench", "--help", "bench-help").status == 0);
   CHECK(run_tool("ede-bench", "log --help", "bench-help-log").status == 0);
 }
+
+TEST_CASE("ede-bench stress: packing 0.8 and restitution 0.5 with TC keep every invariant (small)", "[tool][ede-bench][stress]") {
+  // The by-hand version runs 10^7+ events (README, reliability); CI runs 3 10^5 per scene.
+  const ToolRun r = run_tool("ede-bench", "stress --events 300000 --disks 2000 --checks 30 --out-dir " +
+                                              std::string(EDE_BINARY_DIR) + "/tests",
+                             "stress", 300);
+  INFO(r.out << r.err);
+  REQUIRE(r.status == 0);
+  CHECK(r.out.find("| dense | 2000 | 300000 |") != std::string::npos);
+  CHECK(r.out.find("| inelastic | 2000 | 300000 |") != std::string::npos);
+  std::size_t exact = 0;
+  for (std::size_t at = r.out.find("bit-exact"); at != std::string::npos; at = r.out.find("bit-exact", at + 1)) ++exact;
+  CHECK(exact == 2);
+}

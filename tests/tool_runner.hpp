@@ -36,9 +36,11 @@ inline std::string temp_path(const std::string& name) {
 }
 
 // Runs `tool args` (args already shell-quoted as needed) with stdout and stderr captured to temp files.
-inline ToolRun run_tool(const std::string& tool, const std::string& args, const std::string& tag) {
+// With `seconds`, the run is killed after that long (status 124 from timeout(1): a hang).
+inline ToolRun run_tool(const std::string& tool, const std::string& args, const std::string& tag, int seconds = 0) {
   const std::string base = std::string(EDE_BINARY_DIR) + "/tests/tool-" + std::to_string(::getpid()) + "-" + tag;
-  const std::string cmd = tool_path(tool) + " " + args + " >" + base + ".out 2>" + base + ".err";
+  const std::string limit = seconds > 0 ? "timeout -k 5 " + std::to_string(seconds) + " " : "";
+  const std::string cmd = limit + tool_path(tool) + " " + args + " >" + base + ".out 2>" + base + ".err";
   const int raw = std::system(cmd.c_str());
   ToolRun r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);

@@ -136,6 +136,21 @@ class Engine final : public EngineApi<T> {
     return RunStatus::Running;
   }
 
+  double largest_overlap() const override {
+    double worst = 0;
+    for (std::size_t i = 0; i < p_.size(); ++i) {
+      const Position2<T> pi = position_at(p_.disk[i], now_);
+      for_each_neighbour(std::int32_t(i), grid_.cell_of(std::int32_t(i)), [&](std::int32_t k, T sx, T sy) {
+        if (std::size_t(k) <= i) return;
+        const Position2<T> pk = position_at(p_.disk[k], now_);
+        const double dx = double((pk.x + sx) - pi.x), dy = double((pk.y + sy) - pi.y);
+        const double s = double(p_.disk[i].r + p_.disk[k].r);
+        worst = std::max(worst, (s - std::sqrt(dx * dx + dy * dy)) / s);
+      });
+    }
+    return worst;
+  }
+
   // Debug and test aid: every pair of disks overlapping by more than `tolerance` (relative to the contact
   // distance) at the current time, and predictions in the past. Empty when all is well. O(N) with the grid.
   std::string check_invariants(double tolerance) const override {

@@ -1,10 +1,12 @@
 // ede-bench: the project's benchmarks (not timed tests). Subcommands:
 //   speed  events per second, ns and cycles per event, bytes per disk, against the all-pairs baseline.
 //   log    event log: bytes per event, zstd level, logging overhead, seek time and replay throughput.
+//   stress the hard cases run long (packing 0.8; restitution 0.5 with TC), every invariant checked.
 #include <CLI/CLI.hpp>
 
 #include "bench_log.hpp"
 #include "bench_speed.hpp"
+#include "bench_stress.hpp"
 #include "command_line.hpp"
 
 int main(int argc, char** argv) {
@@ -36,7 +38,16 @@ int main(int argc, char** argv) {
   l->add_option("--out-dir", log.out_dir, "where the temporary logs go (deleted at the end)");
   l->add_flag("--quick", quick, "a smoke run (well under a minute): 1 repeat, 5e5 events, 2e6 seek events");
 
+  ede::bench::StressOptions stress;
+  CLI::App* st = app.add_subcommand("stress", "hard cases run long with every invariant checked");
+  st->add_option("--events", stress.events, "engine events per scene (default 10^7)");
+  st->add_option("--disks", stress.disks, "disks per scene (default 10^4)");
+  st->add_option("--checks", stress.checks, "invariant checks per scene (default 50)")->check(CLI::Range(1, 100000));
+  st->add_option("--out-dir", stress.out_dir, "where the logs go (default /tmp)");
+  st->add_flag("--keep-logs", stress.keep_logs, "keep the logs");
+
   if (const auto stop = ede::tools::parse_command_line(app, argc, argv)) return *stop;
+  if (*st) return ede::bench::run_stress(stress);
   if (*s) return ede::bench::run_speed(speed);
   if (*l) {
     if (log.scenes.empty()) log.scenes = ede::bench::default_log_bench_scenes();

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "ede/crater.hpp"
+#include "report_error.hpp"
 #include "ede/result.hpp"
 #include "exact_text.hpp"
 
@@ -27,7 +28,7 @@ Command add_scan_command(CLI::App& app);
 
 // An error about the input: message on stderr, exit status 1.
 inline int fail(const std::string& message) {
-  std::fprintf(stderr, "ede-crater: error: %s\n", message.c_str());
+  ede::tools::report_error("ede-crater", message);
   return 1;
 }
 

@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "crater_tool.hpp"
+#include "open_log.hpp"
 #include "ede/log_reader.hpp"
 #include "scalar_dispatch.hpp"
 
@@ -76,7 +77,7 @@ Result<CraterSettings> settings_from(const MeasureOptions& o) {
 Result<MeasuredLog> measure_log(const std::string& path, const MeasureOptions& o) {
   auto settings = settings_from(o);
   if (!settings) return settings.error();
-  auto log = LogReader::open(path);
+  auto log = ede::tools::open_log_warning("ede-crater", path);
   if (!log) return log.error();
   std::shared_ptr<const LogReader> reader = log.value();
   auto crater = tools::with_scalar(reader->header().scalar, [&]<class T>() -> Result<CraterMeasurement> {

@@ -5,6 +5,7 @@
 // ede-replay does). Rejected: parsing times as double for every log (a long double log's times would be
 // rounded).
 #include "log_states.hpp"
+#include "open_log.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -110,7 +111,7 @@ class TypedLogStates final : public LogStates {
 }  // namespace
 
 Result<std::unique_ptr<LogStates>> LogStates::open(const std::string& path) {
-  auto log = LogReader::open(path);
+  auto log = ede::tools::open_log_warning("ede-render", path);
   if (!log) return log.error();
   std::shared_ptr<LogReader> reader = log.value();
   return tools::with_scalar(reader->header().scalar, [&]<class T>() -> Result<std::unique_ptr<LogStates>> {

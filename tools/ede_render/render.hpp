@@ -9,6 +9,7 @@
 // replay and process handling).
 #pragma once
 
+#include "report_error.hpp"
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -34,7 +35,7 @@ struct Options {
 
 // An error about the input: message on stderr, exit status 1.
 inline int fail(const std::string& message) {
-  std::fprintf(stderr, "ede-render: error: %s\n", message.c_str());
+  ede::tools::report_error("ede-render", message);
   return 1;
 }
 

@@ -14,6 +14,8 @@
 #include <string>
 
 #include "ede/event.hpp"
+#include "open_log.hpp"
+#include "report_error.hpp"
 #include "ede/log_reader.hpp"
 #include "ede/replay.hpp"
 #include "exact_text.hpp"
@@ -32,7 +34,7 @@ Command add_diff_command(CLI::App& app);
 
 // An error about the input: message on stderr, exit status 1.
 inline int fail(const std::string& message) {
-  std::fprintf(stderr, "ede-replay: error: %s\n", message.c_str());
+  ede::tools::report_error("ede-replay", message);
   return 1;
 }
 
@@ -42,7 +44,9 @@ inline int usage_error(const std::string& message) {
   return 2;
 }
 
-inline Result<std::shared_ptr<LogReader>> open_log(const std::string& path) { return LogReader::open(path); }
+inline Result<std::shared_ptr<LogReader>> open_log(const std::string& path) {
+  return tools::open_log_warning("ede-replay", path);
+}
 
 using tools::exact;   // the digits that read back to the same value of T (exact_text.hpp)
 using tools::Output;  // -o FILE, or stdout (output_file.hpp)

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "ede/engine.hpp"
+#include "report_error.hpp"
 #include "ede/log_reader.hpp"
 #include "ede/log_writer.hpp"
 #include "ede/replay.hpp"
@@ -40,7 +41,7 @@ struct Options {
 };
 
 int fail(const std::string& message) {
-  std::fprintf(stderr, "ede-sim: error: %s\n", message.c_str());
+  ede::tools::report_error("ede-sim", message);
   return 1;
 }
 

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "ede/log_reader.hpp"
+#include "open_log.hpp"
 #include "ede/pressure.hpp"
 #include "stats_cli.hpp"
 #include "stats_tool.hpp"
@@ -165,7 +166,7 @@ int run_pressure(const PressureCliOptions& opt) {
     return usage_error("--bins must be at least 1, and blocks x bins at most 10^7", "pressure");
   if (!opt.plot.empty() && !plot_extension_ok(opt.plot))
     return usage_error("--plot wants a file name ending in .png or .svg, not '" + opt.plot + "'", "pressure");
-  auto log = LogReader::open(opt.log);
+  auto log = ede::tools::open_log_warning("ede-stats", opt.log);
   if (!log) return fail(log.error().message);
   if (!log.value()->complete())
     warn(opt.log + " is incomplete (" + log.value()->incomplete_reason() + "); using what it holds");

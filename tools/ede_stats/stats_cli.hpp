@@ -17,6 +17,8 @@
 #include <vector>
 
 #include "ede/gas_observables.hpp"
+#include "open_log.hpp"
+#include "report_error.hpp"
 #include "ede/log_reader.hpp"
 #include "ede/log_series.hpp"
 #include "ede/result.hpp"
@@ -27,7 +29,7 @@
 namespace ede::stats_tool {
 
 inline int fail(const std::string& message) {
-  std::fprintf(stderr, "ede-stats: error: %s\n", message.c_str());
+  ede::tools::report_error("ede-stats", message);
   return 1;
 }
 
@@ -117,13 +119,9 @@ inline int write_csv_and_plot(const CsvAndFigure& f) {
 }
 
 inline Result<std::shared_ptr<LogReader>> open_log(const std::string& path) {
-  auto log = LogReader::open(path);
+  auto log = ede::tools::open_log_warning("ede-stats", path);
   if (!log) return log.error();
-  if (log.value()->damaged())
-    warn(path + " is damaged; analysing it up to the damage (" + log.value()->incomplete_reason() + ")");
-  else if (!log.value()->complete())
-    warn(path + " is incomplete (" + log.value()->incomplete_reason() + "); analysing it as far as it goes");
-  return log;
+  return log;  // open_log_warning has said so if it is incomplete or damaged
 }
 
 // A log opened with open_log, and its overview (disks, end time, event counts).

@@ -97,6 +97,9 @@ class EngineApi {
   // Debug and test aid, O(N): pairs overlapping by more than `tolerance` of their contact distance and
   // predictions in the past, described; empty when all is well.
   virtual std::string check_invariants(double tolerance) const = 0;
+  // The largest overlap between two disks at the current time, as a fraction of their contact distance
+  // (0 when no pair overlaps). O(N) with the grid. Round-off leaves ~1e-15 in double.
+  virtual double largest_overlap() const = 0;
 };
 
 // A new engine for `initial`; with `resume`, the engine continues from that rebuild point instead, and
