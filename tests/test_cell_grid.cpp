@@ -3,6 +3,7 @@
 #include <set>
 
 #include "cell_grid.hpp"
+#include "engine_core.hpp"
 
 using namespace ede;
 
@@ -43,4 +44,18 @@ TEST_CASE("CellGrid: positions map to cells, clamped at the edges", "[cells]") {
   CHECK(g.cell_containing(-1e-17, 0.2) == 0);
   CHECK(g.boundary_x(4) == 1.0);
   CHECK(g.boundary_x(1) == 0.25);
+}
+
+TEST_CASE("grid shapes stay bounded for very elongated boxes", "[cells]") {
+  // Found by fuzzing: a 1 x 1.7e16 box with 20 disks clamped nx at 1 and let ny grow to 5.8e8 cells.
+  for (const bool periodic : {false, true}) {
+    const GridShape g = grid_shape_for(1.0, 1.7e16, 0.03, 20, periodic, Algorithm::Cells);
+    CHECK(double(g.nx) * double(g.ny) <= 4 * 20 + 16);
+    CHECK(g.nx >= (periodic ? 3 : 1));
+    const GridShape h = grid_shape_for(1.7e16, 1.0, 0.03, 20, periodic, Algorithm::Cells);
+    CHECK(double(h.nx) * double(h.ny) <= 4 * 20 + 16);
+  }
+  // An ordinary box keeps cells one diameter wide.
+  const GridShape u = grid_shape_for(1.0, 1.0, 0.005, 10000, true, Algorithm::Cells);
+  CHECK(u.nx == 99);
 }

@@ -41,9 +41,12 @@ inline u128 residual(T actual, T predicted) {
   return zigzag(i128(ordered_key(actual)) - i128(ordered_key(predicted)));
 }
 
+// Unsigned, wrapping arithmetic: a residual from a corrupted file may be any 128-bit value, and a signed
+// overflow would be undefined behaviour; the (garbage) result is then refused as non-finite or checked
+// like any other value. Valid data never wraps (keys and residuals fit in 81 bits).
 template <class T>
 inline T apply_residual(u128 r, T predicted) {
-  return from_ordered_key<T>(u128(i128(ordered_key(predicted)) + unzigzag(r)));
+  return from_ordered_key<T>(ordered_key(predicted) + u128(unzigzag(r)));
 }
 
 // The raw columns of one chunk, as the encoder fills them and the schema stores them.

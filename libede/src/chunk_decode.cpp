@@ -88,7 +88,7 @@ bool ChunkDecoder<T>::read_fields(const Particles<T>& p, DecodedEvent<T>& e) {
     case EventKind::Pair: {
       u128 zj;
       if (!read_disk(disks_, e.i)) return false;
-      if (!partners_.varint(zj)) return fail("a pair partner is cut short");
+      if (!partners_.varint(zj, 33)) return fail("a pair partner is cut short or out of range");  // zigzag of an int32 difference
       const i128 j = i128(e.i) + unzigzag(zj);
       if (j < 0 || j >= i128(disks_count_) || j == e.i) return fail("a pair partner id is out of range");
       e.j = std::int32_t(j);

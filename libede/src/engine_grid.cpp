@@ -26,10 +26,15 @@ GridShape grid_shape_for(double lx, double ly, double max_radius, std::size_t di
     nx = std::max(1.0, std::floor(nx / scale));
     ny = std::max(1.0, std::floor(ny / scale));
   }
-  // Keep the count well inside int32 even for absurd boxes (the grid is then coarser than it could be).
+  // A very elongated box clamps one side at one cell while the other grows: cap the product too (cells
+  // only get wider, which is always correct), and keep each side well inside int32.
+  const double least = double(min_cells);
+  nx = std::max(least, nx);
+  ny = std::max(least, std::min(ny, std::floor(max_cells / nx)));
+  nx = std::max(least, std::min(nx, std::floor(max_cells / ny)));
   nx = std::min(nx, 65536.0);
   ny = std::min(ny, 65536.0);
-  return {std::max(min_cells, std::int32_t(nx)), std::max(min_cells, std::int32_t(ny))};
+  return {std::int32_t(nx), std::int32_t(ny)};
 }
 
 }  // namespace ede

@@ -31,6 +31,11 @@ class PlacementGrid {
     const double side = std::max(min_cell * (1 + 1e-9), mean_spacing);  // margin: round-off in cell_of
     nx_ = cells_along(lx, side);
     ny_ = cells_along(ly, side);
+    // A very elongated box clamps one side to a single cell while the other grows without bound (a box
+    // 1 x 10^16 asked for 10^9 cells): cap the total; cells only get wider, which is always correct.
+    const std::size_t cap = 4 * std::max<std::size_t>(expected_disks, 1) + 16;
+    ny_ = std::int32_t(std::min<std::size_t>(std::size_t(ny_), std::max<std::size_t>(1, cap / std::size_t(nx_))));
+    nx_ = std::int32_t(std::min<std::size_t>(std::size_t(nx_), std::max<std::size_t>(1, cap / std::size_t(ny_))));
     inv_wx_ = double(nx_) / lx;
     inv_wy_ = double(ny_) / ly;
     head_.assign(std::size_t(nx_) * std::size_t(ny_), kNone);
