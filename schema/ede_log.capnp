@@ -41,6 +41,8 @@ struct Header {
   initialEnergy @18 :Float64;     # kinetic energy at t = 0
   tcModel @19 :Bool;              # the run keeps TC collision times (keyframes carry them)
   columnEncoding @20 :UInt32;     # version of the chunk column encodings (FORMAT.md); 1
+  gravityX @21 :Float64;          # constant gravity (0 when absent: logs written before it read as no gravity)
+  gravityY @22 :Float64;
 }
 
 # A run of consecutive logged events, stored as columns (FORMAT.md, "Chunk columns").

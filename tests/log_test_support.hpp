@@ -34,6 +34,9 @@ LoggedRun<T> run_logged(const InitialState& s, const EngineOptions& o, const std
   info.boundary = o.boundary;
   info.species_names = s.species_names;
   info.rebuild_interval = o.rebuild_interval;
+  info.tc_model = o.physics.tc > 0 && !o.physics.elastic();
+  info.gx = o.physics.gravity[0];
+  info.gy = o.physics.gravity[1];
   auto writer = LogWriter<T>::create(r.path, info, settings);
   if (!writer) throw std::runtime_error(writer.error().message);
   r.recorder->keep_states = true;

@@ -86,3 +86,42 @@ TEST_CASE("time_to_reach: towards, away, at rest, past the line", "[geometry]") 
   CHECK(time_to_reach(0.25, 0.0, 0.75) == kNever<double>);
   CHECK(time_to_reach(0.8, 0.5, 0.75) == 0.0);  // already past while moving on: now
 }
+
+TEST_CASE("time_to_reach_accelerated: falling, thrown up, bouncing, turning back", "[geometry][gravity]") {
+  // Dropped from rest 0.5 above the floor under g = 1: t = sqrt(2 h / g) = 1.
+  CHECK(time_to_reach_accelerated(0.5, 0.0, -1.0) == Approx(1.0).epsilon(1e-15));
+  // Thrown towards the line at speed 1 with no acceleration: linear.
+  CHECK(time_to_reach_accelerated(0.25, -1.0, 0.0) == 0.25);
+  // Thrown away (up) at speed 1 under g = 1 from 0.5 above the floor: s(t) = 0.5 + t - t^2/2 = 0 at
+  // t = 1 + sqrt(2).
+  CHECK(time_to_reach_accelerated(0.5, 1.0, -1.0) == Approx(1 + std::sqrt(2.0)).epsilon(1e-15));
+  // Just bounced off the floor (s = 0, moving up at 2, g = 1): back after 2 u / g = 4.
+  CHECK(time_to_reach_accelerated(0.0, 2.0, -1.0) == 4.0);
+  CHECK(time_to_reach_accelerated(-1e-17, 2.0, -1.0) == 4.0);
+  // Towards a ceiling 1 above, thrown up at 1 under g = 1 (in s: u = -1, a = +1): it turns back at 0.5.
+  CHECK(time_to_reach_accelerated(1.0, -1.0, 1.0) == kNever<double>);
+  // ... thrown at 2 it reaches it: s = 1 - 2t + t^2/2 = 0 at t = 2 - sqrt(2).
+  CHECK(time_to_reach_accelerated(1.0, -2.0, 1.0) == Approx(2 - std::sqrt(2.0)).epsilon(1e-15));
+  // At the line and moving out, or at rest and pulled out: now.
+  CHECK(time_to_reach_accelerated(0.0, -1.0, -1.0) == 0.0);
+  CHECK(time_to_reach_accelerated(0.0, 0.0, -1.0) == 0.0);
+  // At the line, moving in and pushed further in: never.
+  CHECK(time_to_reach_accelerated(0.0, 1.0, 1.0) == kNever<double>);
+  // A record from before a cell crossing: 0.1 below the line it has crossed since, rising at 1 under g = 1.
+  // s(t) = -0.1 + t - t^2/2 falls back through 0 at t = 1 + sqrt(1 - 0.2) (the rise through 0 is earlier).
+  CHECK(time_to_reach_accelerated(-0.1, 1.0, -1.0) == Approx(1 + std::sqrt(0.8)).epsilon(1e-15));
+  // ... and without acceleration, or pushed away: it never crosses back; a record below, still falling: now.
+  CHECK(time_to_reach_accelerated(-0.1, 1.0, 0.0) == kNever<double>);
+  CHECK(time_to_reach_accelerated(-0.1, 1.0, 1.0) == kNever<double>);
+  CHECK(time_to_reach_accelerated(-0.1, -1.0, -1.0) == 0.0);
+  // Never reaching the line from inside: never; from outside (round-off): now.
+  CHECK(time_to_reach_accelerated(1.0, -1.0, 1.0) == kNever<double>);
+  CHECK(time_to_reach_accelerated(-1e-15, 0.0, 1.0) == kNever<double>);  // outside but pushed back in
+  // Only crossings at or after t_min count: a record from t = 0 of a coordinate that rose through the line
+  // at t = 0.15 and falls back through it at t = 1.045 (s = 0.0786 - 0.5976 t + t^2 / 2, seen from above:
+  // a > 0). Asked at t_min = 1.045 (just entered below): the upward crossing is past, none is ahead.
+  CHECK(time_to_reach_accelerated(0.0786, -0.5976, 1.0, 1.05) == kNever<double>);
+  CHECK(time_to_reach_accelerated(0.0786, -0.5976, 1.0, 0.0) == Approx(0.5976 - std::sqrt(0.5976 * 0.5976 - 0.1572)).epsilon(1e-12));
+  // A tiny gap closing fast: no cancellation (the answer is gap / speed to first order).
+  CHECK(time_to_reach_accelerated(1e-12, -1.0, -1.0) == Approx(1e-12).epsilon(1e-9));
+}

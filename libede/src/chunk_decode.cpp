@@ -92,21 +92,22 @@ bool ChunkDecoder<T>::read_fields(const Particles<T>& p, DecodedEvent<T>& e) {
       const i128 j = i128(e.i) + unzigzag(zj);
       if (j < 0 || j >= i128(disks_count_) || j == e.i) return fail("a pair partner id is out of range");
       e.j = std::int32_t(j);
-      const Disk<T>& a = p.disk[std::size_t(e.i)];
-      const Disk<T>& b = p.disk[std::size_t(e.j)];
+      // Velocities just before the event: the records' own, moved on by gravity if there is any.
+      const T aix = p.vx_at(std::size_t(e.i), e.time), aiy = p.vy_at(std::size_t(e.i), e.time);
+      const T ajx = p.vx_at(std::size_t(e.j), e.time), ajy = p.vy_at(std::size_t(e.j), e.time);
       const T mi = p.mass[std::size_t(e.i)], mj = p.mass[std::size_t(e.j)];
       if (!read_scalar(e.vix) || !read_scalar(e.viy)) return false;
-      return read_residual(momentum_prediction(mi, mj, a.vx, b.vx, e.vix), e.vjx) &&
-             read_residual(momentum_prediction(mi, mj, a.vy, b.vy, e.viy), e.vjy);
+      return read_residual(momentum_prediction(mi, mj, aix, ajx, e.vix), e.vjx) &&
+             read_residual(momentum_prediction(mi, mj, aiy, ajy, e.viy), e.vjy);
     }
     case EventKind::Wall: {
       u128 wall;
       if (!read_disk(disks_, e.i)) return false;
       if (!partners_.varint(wall, 8) || wall > 3) return fail("a wall id is missing or out of range");
       e.j = std::int32_t(wall);
-      const Disk<T>& a = p.disk[std::size_t(e.i)];
+      const T ax = p.vx_at(std::size_t(e.i), e.time), ay = p.vy_at(std::size_t(e.i), e.time);
       const bool vertical = e.j == kWallLeft || e.j == kWallRight;
-      return read_residual(vertical ? -a.vx : a.vx, e.vix) && read_residual(vertical ? a.vy : -a.vy, e.viy);
+      return read_residual(vertical ? -ax : ax, e.vix) && read_residual(vertical ? ay : -ay, e.viy);
     }
     case EventKind::Wrap: {
       u128 dir;
@@ -150,14 +151,14 @@ bool apply_event(const DecodedEvent<T>& e, Particles<T>& p, T lx, T ly) {
     case EventKind::Pair: {
       Disk<T>& a = p.disk[std::size_t(e.i)];
       Disk<T>& b = p.disk[std::size_t(e.j)];
-      advance_disk(a, e.time);
-      advance_disk(b, e.time);
+      advance_disk(a, e.time, p.gx, p.gy);
+      advance_disk(b, e.time, p.gx, p.gy);
       a.vx = e.vix, a.vy = e.viy, b.vx = e.vjx, b.vy = e.vjy;
       return finite_record(a) && finite_record(b);
     }
     case EventKind::Wall: {
       Disk<T>& a = p.disk[std::size_t(e.i)];
-      advance_disk(a, e.time);
+      advance_disk(a, e.time, p.gx, p.gy);
       a.vx = e.vix, a.vy = e.viy;
       return finite_record(a);
     }
@@ -169,7 +170,7 @@ bool apply_event(const DecodedEvent<T>& e, Particles<T>& p, T lx, T ly) {
     case EventKind::Action: {
       bool ok = true;
       for (Disk<T>& d : p.disk) {
-        reverse_disk(d, e.time);
+        reverse_disk(d, e.time, p.gx, p.gy);
         ok = ok && finite_record(d);
       }
       return ok;

@@ -36,6 +36,9 @@ long double full_sum(const Particles<T>& p, std::vector<long double>& e) {
 
 template <class T>
 Result<EnergyFractionCurve> walk(std::shared_ptr<const LogReader> log, double fraction, std::size_t points) {
+  if (log->header().gx != 0 || log->header().gy != 0)
+    return Error{log->path() + ": the run is under gravity, where the kinetic energy changes between collisions "
+                 "and its fraction does not mark the end of the impact; measure at a time with --at T"};
   auto made = Replay<T>::create(log);
   if (!made) return made.error();
   Replay<T>& replay = *made.value();

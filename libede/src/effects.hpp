@@ -32,4 +32,15 @@ struct InelasticTc {
   static constexpr bool kTc = true;
 };
 
+// Fields acting on the disks between events. Without one, disks move in straight lines (drift); with
+// uniform gravity (walls only: in a periodic box everything would fall forever), in parabolas, and wall
+// and cell-crossing times solve quadratics. Pair times stay those of straight lines: two disks under the
+// same g see each other move in a straight line.
+struct NoField {
+  static constexpr bool kGravity = false;
+};
+struct UniformGravity {
+  static constexpr bool kGravity = true;
+};
+
 }  // namespace ede

@@ -25,6 +25,33 @@ void momentum(const Particles<T>& p, double& px, double& py) {
   py = double(sy);
 }
 
+template <class T>
+double kinetic_energy(const Particles<T>& p, T t) {
+  long double sum = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const long double vx = p.vx_at(i, t), vy = p.vy_at(i, t);
+    sum += 0.5L * (long double)p.mass[i] * (vx * vx + vy * vy);
+  }
+  return double(sum);
+}
+
+template <class T>
+void momentum(const Particles<T>& p, T t, double& px, double& py) {
+  long double sx = 0, sy = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    sx += (long double)p.mass[i] * p.vx_at(i, t);
+    sy += (long double)p.mass[i] * p.vy_at(i, t);
+  }
+  px = double(sx);
+  py = double(sy);
+}
+
+template double kinetic_energy<float>(const Particles<float>&, float);
+template double kinetic_energy<double>(const Particles<double>&, double);
+template double kinetic_energy<long double>(const Particles<long double>&, long double);
+template void momentum<float>(const Particles<float>&, float, double&, double&);
+template void momentum<double>(const Particles<double>&, double, double&, double&);
+template void momentum<long double>(const Particles<long double>&, long double, double&, double&);
 template double kinetic_energy<float>(const Particles<float>&);
 template double kinetic_energy<double>(const Particles<double>&);
 template double kinetic_energy<long double>(const Particles<long double>&);

@@ -35,8 +35,20 @@ Status check_engine_input(const InitialState& init, const EngineOptions& options
     max_radius = std::max(max_radius, init.radius[i]);
   }
   const PhysicsSpec& ph = options.physics;
-  if (!(ph.restitution >= 0 && ph.restitution <= 1) || !(ph.wall_restitution >= 0 && ph.wall_restitution <= 1))
-    return Error{"restitution coefficients must lie in [0, 1]"};
+  bool in_range = ph.restitution >= 0 && ph.restitution <= 1;
+  for (int w = 0; w < 4; ++w) in_range = in_range && ph.wall(w) >= 0 && ph.wall(w) <= 1;
+  for (const PairRestitution& p : ph.pairs) {
+    in_range = in_range && p.value >= 0 && p.value <= 1;
+    for (const std::string& name : {p.a, p.b})
+      if (std::find(init.species_names.begin(), init.species_names.end(), name) == init.species_names.end())
+        return Error{"a pair restitution names species '" + name + "', which the initial state does not have"};
+  }
+  if (!in_range) return Error{"restitution coefficients must lie in [0, 1]"};
+  if (!std::isfinite(ph.gravity[0]) || !std::isfinite(ph.gravity[1])) return Error{"gravity must be finite"};
+  if (ph.has_gravity() && options.boundary == BoundaryKind::Periodic)
+    return Error{"gravity needs walls: in a periodic box every disk would fall forever"};
+  if (ph.has_gravity() && options.stop.energy_fraction)
+    return Error{"with gravity the kinetic energy changes between collisions: stop on time or events instead"};
   if (!(ph.tc >= 0) || !finite(ph.tc)) return Error{"tc must be finite and >= 0"};
   const bool periodic = options.boundary == BoundaryKind::Periodic;
   if (Status s = check_initial_state(init, options.boundary, "the initial state"); !s) return s;

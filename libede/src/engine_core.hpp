@@ -41,11 +41,12 @@ struct GridShape {
 GridShape grid_shape_for(double lx, double ly, double max_radius, std::size_t disks, bool periodic,
                          Algorithm algorithm);
 
-template <class T, class Boundary, class Dissipation>
+template <class T, class Boundary, class Dissipation, class Field = NoField>
 class Engine final : public EngineApi<T> {
   static constexpr bool kPeriodic = Boundary::kPeriodic;
   static constexpr bool kInelastic = Dissipation::kInelastic;
   static constexpr bool kTc = Dissipation::kTc;
+  static constexpr bool kGravity = Field::kGravity;
 
   // One disk's current prediction: its earliest collision (pair or wall) and its cell crossing, kept
   // apart so a crossing can update the collision part with the new neighbours only.
@@ -66,9 +67,12 @@ class Engine final : public EngineApi<T> {
     ly_ = T(init.ly);
     half_lx_ = lx_ / 2;
     half_ly_ = ly_ / 2;
-    one_plus_xi_ = T(1) + T(options.physics.restitution);
-    xi_wall_ = T(options.physics.wall_restitution);
     tc_ = T(options.physics.tc);
+    if constexpr (kInelastic) setup_restitution(init.species_names, options.physics);
+    if constexpr (kGravity) {
+      gx_ = p_.gx = T(options.physics.gravity[0]);
+      gy_ = p_.gy = T(options.physics.gravity[1]);
+    }
     b_noise2_ = b_noise2_for(std::max(lx_, ly_));
     grid_.reset(shape.nx, shape.ny, lx_, ly_, p_.disk);
     queue_.reset(static_cast<std::uint32_t>(p_.size()));
@@ -91,11 +95,17 @@ class Engine final : public EngineApi<T> {
     std::ostringstream s;
     s << Boundary::kName << ", ";
     if constexpr (kInelastic) {
-      s << "inelastic (xi=" << opt_.physics.restitution << ", xi_w=" << opt_.physics.wall_restitution << ")";
+      s << "inelastic (xi=" << opt_.physics.restitution;
+      if (!opt_.physics.pairs.empty()) s << ", " << opt_.physics.pairs.size() << " species pairs apart";
+      s << ", xi_w=" << opt_.physics.wall_restitution;
+      for (int w = 0; w < 4; ++w)
+        if (opt_.physics.walls[std::size_t(w)]) s << ", " << kWallName[w] << " " << *opt_.physics.walls[std::size_t(w)];
+      s << ")";
       if constexpr (kTc) s << ", TC (tc=" << opt_.physics.tc << ")";
     } else {
       s << "elastic";
     }
+    if constexpr (kGravity) s << ", gravity (" << opt_.physics.gravity[0] << ", " << opt_.physics.gravity[1] << ")";
     s << ", grid " << grid_.nx() << "x" << grid_.ny();
     return s.str();
   }
@@ -139,10 +149,10 @@ class Engine final : public EngineApi<T> {
   double largest_overlap() const override {
     double worst = 0;
     for (std::size_t i = 0; i < p_.size(); ++i) {
-      const Position2<T> pi = position_at(p_.disk[i], now_);
+      const Position2<T> pi = pos_at(p_.disk[i]);
       for_each_neighbour(std::int32_t(i), grid_.cell_of(std::int32_t(i)), [&](std::int32_t k, T sx, T sy) {
         if (std::size_t(k) <= i) return;
-        const Position2<T> pk = position_at(p_.disk[k], now_);
+        const Position2<T> pk = pos_at(p_.disk[k]);
         const double dx = double((pk.x + sx) - pi.x), dy = double((pk.y + sy) - pi.y);
         const double s = double(p_.disk[i].r + p_.disk[k].r);
         worst = std::max(worst, (s - std::sqrt(dx * dx + dy * dy)) / s);
@@ -158,10 +168,10 @@ class Engine final : public EngineApi<T> {
     const std::size_t n = p_.size();
     for (std::size_t i = 0; i < n; ++i) {
       if (queue_.key_of(std::uint32_t(i)).time < now_) problems << "disk " << i << " has an event in the past; ";
-      const Position2<T> pi = position_at(p_.disk[i], now_);
+      const Position2<T> pi = pos_at(p_.disk[i]);
       for_each_neighbour(std::int32_t(i), grid_.cell_of(std::int32_t(i)), [&](std::int32_t k, T sx, T sy) {
         if (std::size_t(k) <= i) return;
-        const Position2<T> pk = position_at(p_.disk[k], now_);
+        const Position2<T> pk = pos_at(p_.disk[k]);
         const double dx = double((pk.x + sx) - pi.x), dy = double((pk.y + sy) - pi.y);
         const double s = double(p_.disk[i].r + p_.disk[k].r);
         if (std::sqrt(dx * dx + dy * dy) < s * (1 - tolerance))
@@ -221,7 +231,7 @@ class Engine final : public EngineApi<T> {
   void rebuild(bool notify = true) {
     grid_.reset(grid_.nx(), grid_.ny(), lx_, ly_, p_.disk);
     for (std::size_t i = 0; i < p_.size(); ++i) {
-      const Position2<T> pos = position_at(p_.disk[i], now_);
+      const Position2<T> pos = pos_at(p_.disk[i]);
       grid_.insert(std::int32_t(i), grid_.cell_containing(pos.x, pos.y));
     }
     for (std::size_t i = 0; i < p_.size(); ++i) predict(std::int32_t(i));
@@ -269,17 +279,45 @@ class Engine final : public EngineApi<T> {
     return true;
   }
 
+  // Position and velocity of a disk at now_: straight lines, or parabolas under gravity.
+  Position2<T> pos_at(const Disk<T>& d) const {
+    if constexpr (kGravity)
+      return {position_along(d.x, d.vx, gx_, d.t, now_), position_along(d.y, d.vy, gy_, d.t, now_)};
+    else
+      return position_at(d, now_);
+  }
+  Position2<T> vel_at(const Disk<T>& d) const {
+    if constexpr (kGravity)
+      return {velocity_along(d.vx, gx_, d.t, now_), velocity_along(d.vy, gy_, d.t, now_)};
+    else
+      return {d.vx, d.vy};
+  }
+
+  // Time at which disks i (at pi with velocity vi, now) and k (image shifted by sx, sy) touch. Under gravity
+  // their relative motion is still a straight line, from their velocities at now.
+  T pair_time(const Disk<T>& di, Position2<T> pi, Position2<T> vi, const Disk<T>& dk, T sx, T sy) const {
+    if constexpr (kGravity) {
+      const Position2<T> pk = pos_at(dk), vk = vel_at(dk);
+      return now_ + pair_contact_time((pk.x + sx) - pi.x, (pk.y + sy) - pi.y, vk.x - vi.x, vk.y - vi.y,
+                                      di.r + dk.r, b_noise2_);
+    } else {
+      (void)vi;
+      return predict_pair(di, pi, dk, sx, sy, now_, b_noise2_);
+    }
+  }
+
   // Best pair candidate of disk i against the disks of cell (cx, cy).
-  void scan_cell(std::int32_t i, Position2<T> pi, std::int32_t cx, std::int32_t cy, Candidate<T>& best) const {
+  void scan_cell(std::int32_t i, Position2<T> pi, Position2<T> vi, std::int32_t cx, std::int32_t cy,
+                 Candidate<T>& best) const {
     const Disk<T>& di = p_.disk[i];
     const std::int32_t lp = di.last_partner;
     visit_cell(i, cx, cy, [&](std::int32_t k, T sx, T sy) {
       const Disk<T>& dk = p_.disk[k];
       if (k == lp) {
-        const Position2<T> pk = position_at(dk, now_);
+        const Position2<T> pk = pos_at(dk);
         if (just_collided(i, k, (pk.x + sx) - pi.x, (pk.y + sy) - pi.y)) return;
       }
-      const T t = predict_pair(di, pi, dk, sx, sy, now_, b_noise2_);
+      const T t = pair_time(di, pi, vi, dk, sx, sy);
       if (t > best.time) return;
       const Candidate<T> c{t, EventKind::Pair, k};
       if (c.before(best)) best = c;
@@ -290,21 +328,31 @@ class Engine final : public EngineApi<T> {
   void predict(std::int32_t i) {
     const Disk<T>& d = p_.disk[i];
     Candidate<T> best;
-    if constexpr (!kPeriodic) best = predict_wall(d, lx_, ly_, now_);
-    const Position2<T> pi = position_at(d, now_);
+    if constexpr (kGravity)
+      best = predict_wall_accelerated(d, lx_, ly_, gx_, gy_, now_);
+    else if constexpr (!kPeriodic)
+      best = predict_wall(d, lx_, ly_, now_);
+    const Position2<T> pi = pos_at(d), vi = vel_at(d);
     const std::int32_t cell = grid_.cell_of(i);
     const std::int32_t cx = grid_.cell_x(cell), cy = grid_.cell_y(cell);
     for (std::int32_t dy = -1; dy <= 1; ++dy)
-      for (std::int32_t dx = -1; dx <= 1; ++dx) scan_cell(i, pi, cx + dx, cy + dy, best);
+      for (std::int32_t dx = -1; dx <= 1; ++dx) scan_cell(i, pi, vi, cx + dx, cy + dy, best);
     Prediction& pr = pred_[i];
     pr.t_coll = best.time;
     pr.coll_kind = best.kind;
     pr.partner = best.partner;
     pr.partner_counter = counter_of(best);
-    const Crossing<T> cross = predict_crossing(d, grid_, cell, kPeriodic, now_);
+    const Crossing<T> cross = crossing(d, cell);
     pr.t_cross = cross.time;
     pr.cross_dir = cross.dir;
     push(i);
+  }
+
+  Crossing<T> crossing(const Disk<T>& d, std::int32_t cell) const {
+    if constexpr (kGravity)
+      return predict_crossing_accelerated(d, grid_, cell, gx_, gy_, now_);
+    else
+      return predict_crossing(d, grid_, cell, kPeriodic, now_);
   }
 
   std::uint32_t counter_of(const Candidate<T>& c) const {
@@ -356,7 +404,12 @@ class Engine final : public EngineApi<T> {
     return true;
   }
 
-  void advance(std::int32_t i) { advance_disk(p_.disk[i], now_); }
+  void advance(std::int32_t i) {
+    if constexpr (kGravity)
+      advance_disk(p_.disk[i], now_, gx_, gy_);
+    else
+      advance_disk(p_.disk[i], now_);
+  }
 
   // Within t_c of either disk's previous collision the TC model makes a collision elastic.
   bool tc_elastic(std::int32_t i, std::int32_t j) const {
@@ -386,7 +439,7 @@ class Engine final : public EngineApi<T> {
     double ke_before = 0;
     if constexpr (kInelastic) ke_before = pair_energy(i, j);
     T one_plus_xi = T(2);
-    if constexpr (kInelastic) one_plus_xi = by_tc ? T(2) : one_plus_xi_;
+    if constexpr (kInelastic) one_plus_xi = by_tc ? T(2) : pair_one_plus_xi(i, j);
     collide_pair(dx, dy, p_.mass[i], p_.mass[j], one_plus_xi, a.vx, a.vy, b.vx, b.vy);
     if constexpr (kInelastic) ke_ += pair_energy(i, j) - ke_before;
     if constexpr (kTc) p_.last_collision[i] = p_.last_collision[j] = now_;
@@ -413,7 +466,7 @@ class Engine final : public EngineApi<T> {
       if (by_tc)
         collide_wall_elastic(vertical, d.vx, d.vy);
       else
-        collide_wall(vertical, xi_wall_, d.vx, d.vy);
+        collide_wall(vertical, xi_wall_[wall], d.vx, d.vy);
       ke_ += disk_energy(i) - ke_before;
     } else {
       collide_wall_elastic(vertical, d.vx, d.vy);
@@ -447,10 +500,10 @@ class Engine final : public EngineApi<T> {
 
     Prediction& pr = pred_[i];
     Candidate<T> best{pr.t_coll, pr.coll_kind, pr.partner};
-    const Position2<T> pi = position_at(p_.disk[i], now_);
+    const Position2<T> pi = pos_at(p_.disk[i]), vi = vel_at(p_.disk[i]);
     for (std::int32_t k = -1; k <= 1; ++k) {
-      if (step_x != 0) scan_cell(i, pi, cx + step_x, cy + k, best);
-      else scan_cell(i, pi, cx + k, cy + step_y, best);
+      if (step_x != 0) scan_cell(i, pi, vi, cx + step_x, cy + k, best);
+      else scan_cell(i, pi, vi, cx + k, cy + step_y, best);
     }
     if (best.time != pr.t_coll || best.kind != pr.coll_kind || best.partner != pr.partner) {
       pr.t_coll = best.time;
@@ -458,7 +511,7 @@ class Engine final : public EngineApi<T> {
       pr.partner = best.partner;
       pr.partner_counter = counter_of(best);
     }
-    const Crossing<T> cross = predict_crossing(p_.disk[i], grid_, grid_.cell_of(i), kPeriodic, now_);
+    const Crossing<T> cross = crossing(p_.disk[i], grid_.cell_of(i));
     pr.t_cross = cross.time;
     pr.cross_dir = cross.dir;
     push(i);
@@ -485,7 +538,10 @@ class Engine final : public EngineApi<T> {
     now_ = t;
     ++next_action_index_;
     for (std::size_t i = 0; i < p_.size(); ++i) {
-      reverse_disk(p_.disk[i], now_);
+      if constexpr (kGravity)
+        reverse_disk(p_.disk[i], now_, gx_, gy_);
+      else
+        reverse_disk(p_.disk[i], now_);
       ++p_.disk[i].counter;
       p_.disk[i].last_partner = -1;
     }
@@ -542,6 +598,28 @@ class Engine final : public EngineApi<T> {
     return s;
   }
 
+  // Restitution per pair of species (a table, with a fast path when every pair has the same) and per wall.
+  void setup_restitution(const std::vector<std::string>& names, const PhysicsSpec& ph) {
+    const std::size_t n = std::max<std::size_t>(names.size(), 1);
+    species_count_ = n;
+    pair_table_.assign(n * n, T(1) + T(ph.restitution));
+    const auto index_of = [&](const std::string& name) {
+      return std::size_t(std::find(names.begin(), names.end(), name) - names.begin());
+    };
+    for (const PairRestitution& pr : ph.pairs) {
+      const std::size_t a = index_of(pr.a), b = index_of(pr.b);  // checked by check_engine_input
+      pair_table_[a * n + b] = pair_table_[b * n + a] = T(1) + T(pr.value);
+    }
+    uniform_pairs_ = std::all_of(pair_table_.begin(), pair_table_.end(), [&](T v) { return v == pair_table_[0]; });
+    one_plus_xi_ = pair_table_[0];
+    for (int w = 0; w < 4; ++w) xi_wall_[w] = T(ph.wall(w));
+  }
+
+  T pair_one_plus_xi(std::int32_t i, std::int32_t j) const {
+    if (uniform_pairs_) return one_plus_xi_;
+    return pair_table_[std::size_t(p_.species[i]) * species_count_ + std::size_t(p_.species[j])];
+  }
+
   double disk_energy(std::int32_t i) const {
     const double vx = double(p_.disk[i].vx), vy = double(p_.disk[i].vy);
     return 0.5 * double(p_.mass[i]) * (vx * vx + vy * vy);
@@ -557,7 +635,13 @@ class Engine final : public EngineApi<T> {
   EventCounts counts_;
 
   T lx_ = 1, ly_ = 1, half_lx_ = 0.5, half_ly_ = 0.5;
-  T one_plus_xi_ = 2, xi_wall_ = 1, tc_ = 0;
+  T one_plus_xi_ = 2, tc_ = 0;
+  T xi_wall_[4] = {1, 1, 1, 1};
+  std::vector<T> pair_table_;  // 1 + xi for species (a, b) at a * species_count_ + b
+  std::size_t species_count_ = 1;
+  bool uniform_pairs_ = true;
+  T gx_ = 0, gy_ = 0;          // gravity (UniformGravity only)
+  static constexpr const char* kWallName[4] = {"left", "right", "bottom", "top"};
   T b_noise2_ = 0;  // round-off floor of b, geometry.hpp
   T now_ = 0;
   T stop_time_ = kNever<T>;

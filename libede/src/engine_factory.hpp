@@ -13,14 +13,13 @@ namespace ede {
 
 Status check_engine_input(const InitialState& init, const EngineOptions& options, GridShape& shape);
 
-template <class T, class Boundary>
+template <class T, class Boundary, class Field = NoField>
 std::unique_ptr<EngineApi<T>> make_engine_for_boundary(const InitialState& init, const EngineOptions& o,
                                                        GridShape shape, const ResumePoint<T>* resume) {
   const PhysicsSpec& ph = o.physics;
-  const bool inelastic = ph.restitution != 1.0 || ph.wall_restitution != 1.0;
-  if (!inelastic) return std::make_unique<Engine<T, Boundary, Elastic>>(init, o, shape, resume);
-  if (ph.tc > 0) return std::make_unique<Engine<T, Boundary, InelasticTc>>(init, o, shape, resume);
-  return std::make_unique<Engine<T, Boundary, Inelastic>>(init, o, shape, resume);
+  if (ph.elastic()) return std::make_unique<Engine<T, Boundary, Elastic, Field>>(init, o, shape, resume);
+  if (ph.tc > 0) return std::make_unique<Engine<T, Boundary, InelasticTc, Field>>(init, o, shape, resume);
+  return std::make_unique<Engine<T, Boundary, Inelastic, Field>>(init, o, shape, resume);
 }
 
 template <class T>
@@ -28,8 +27,7 @@ Status check_resume_point(const InitialState& init, const EngineOptions& options
   if (r.disks.size() != init.size())
     return Error{"the resume point holds " + std::to_string(r.disks.size()) + " disks, the scene " +
                  std::to_string(init.size())};
-  const bool tc = options.physics.tc > 0 &&
-                  (options.physics.restitution != 1.0 || options.physics.wall_restitution != 1.0);
+  const bool tc = options.physics.tc > 0 && !options.physics.elastic();
   if (tc && r.last_collision.size() != init.size())
     return Error{"the resume point lacks the TC model's collision times"};
   for (const Disk<T>& d : r.disks) {
@@ -50,6 +48,8 @@ Result<std::unique_ptr<EngineApi<T>>> make_engine(const InitialState& init, cons
     if (Status s = check_resume_point(init, options, *resume); !s) return s.error();
   if (options.boundary == BoundaryKind::Periodic)
     return make_engine_for_boundary<T, PeriodicBoundary>(init, options, shape, resume);
+  if (options.physics.has_gravity())
+    return make_engine_for_boundary<T, WallsBoundary, UniformGravity>(init, options, shape, resume);
   return make_engine_for_boundary<T, WallsBoundary>(init, options, shape, resume);
 }
 

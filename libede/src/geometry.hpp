@@ -77,4 +77,38 @@ inline T time_to_reach(T x, T v, T target) {
   return kNever<T>;
 }
 
+// Time for a coordinate under constant acceleration to reach a line (walls and cell sides under gravity).
+// In terms of s, the signed distance to the line at the record's time, positive on the side the coordinate
+// belongs to, with rate u = ds/dt and acceleration a = d^2s/dt^2: the first t >= t_min (t_min = now minus
+// the record's time) at which s + u t + a t^2 / 2 falls through 0, i.e. crosses the line outwards. The
+// record can predate cell crossings, so the coordinate may have been on the far side then, and the roots
+// of the quadratic include crossings already past: only those at or after t_min count. The outward
+// crossing is the larger root when a < 0 (s rises, then falls) and the smaller when a > 0. If there is none
+// ahead, the answer is t_min ("now") only for a coordinate outside at t_min and still moving outwards
+// (round-off put it a hair past the line), else never. Roots from the stable pair
+// q = -(u + sign(u) sqrt(d)) / 2: q / (a/2) and s / q, so neither loses digits when s is tiny or the
+// discriminant is close to u^2.
+// A disk resting exactly on a floor (s = 0, u = 0, a < 0) hits it now, again and again: resting contact is
+// not an event-driven notion, which is why gravity with inelastic walls needs restitution above 0 and the
+// TC model (else the stall detector ends the run with a message).
+template <class T>
+inline T time_to_reach_accelerated(T s, T u, T a, T t_min = T(0)) {
+  const T s_now = s + u * t_min + a * t_min * t_min / T(2), u_now = u + a * t_min;
+  const bool leaving_outside = s_now < T(0) && (u_now < T(0) || (u_now == T(0) && a < T(0)));
+  if (a == T(0)) {
+    if (!(u < T(0))) return kNever<T>;  // moving inwards or along the line
+    const T t = s / -u;
+    return t >= t_min ? t : (leaving_outside ? t_min : kNever<T>);
+  }
+  const T d = u * u - T(2) * a * s;
+  if (d < T(0)) return leaving_outside ? t_min : kNever<T>;  // the line is never reached again
+  const T root = std::sqrt(d);
+  const T q = u < T(0) ? (-u + root) / T(2) : -(u + root) / T(2);  // q = -(u + sign(u) sqrt(d)) / 2
+  const T r1 = q / (a / T(2));
+  const T r2 = q != T(0) ? s / q : r1;  // q == 0 only when u == 0 and d == 0: the double root 0
+  const T outward = a < T(0) ? std::max(r1, r2) : std::min(r1, r2);
+  if (outward >= t_min) return outward;
+  return leaving_outside ? t_min : kNever<T>;
+}
+
 }  // namespace ede

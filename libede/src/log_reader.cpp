@@ -192,6 +192,8 @@ Status LogReader::read_header_record(std::uint64_t offset, std::uint64_t payload
     for (const std::uint32_t s : h.getSpecies()) out.species.push_back(s);
     out.initial_energy = h.getInitialEnergy();
     out.tc_model = h.getTcModel();
+    out.gx = h.getGravityX();
+    out.gy = h.getGravityY();
     if (h.getColumnEncoding() != 1)
       return Error{at(path_, offset) + ": chunk column encoding " + std::to_string(h.getColumnEncoding()) +
                    " is unknown to this ede (it reads encoding 1)"};
@@ -205,7 +207,8 @@ Status LogReader::read_header_record(std::uint64_t offset, std::uint64_t payload
     return Error{at(path_, offset) + ": the header's per-disk data does not match its disk count"};
   for (const std::uint32_t s : h.species)
     if (s >= h.species_names.size()) return Error{at(path_, offset) + ": a disk names a species that does not exist"};
-  if (!(h.lx > 0) || !(h.ly > 0) || !std::isfinite(h.lx) || !std::isfinite(h.ly) || h.chunk_events == 0)
+  if (!(h.lx > 0) || !(h.ly > 0) || !std::isfinite(h.lx) || !std::isfinite(h.ly) || h.chunk_events == 0 ||
+      !std::isfinite(h.gx) || !std::isfinite(h.gy))
     return Error{at(path_, offset) + ": the header's box or chunk size is invalid"};
   return Ok{};
 }

@@ -89,9 +89,23 @@ class EnergyWalk {
     }
   }
 
-  void record(LogSeries& s) const {
-    s.kinetic_energy.push_back(double(total_));
-    for (std::size_t k = 0; k < species_sum_.size(); ++k) s.species_energy[k].push_back(double(species_sum_[k]));
+  // The energies at time t, the state being that after every event before t. Under gravity the velocities
+  // change between events, so the sums are taken afresh from the replayed state at t (O(N) per point).
+  void record(LogSeries& s, T t) const {
+    if (p_.gx != T(0) || p_.gy != T(0)) {
+      long double total = 0;
+      std::vector<long double> per_species(species_sum_.size(), 0.0L);
+      for (std::size_t i = 0; i < p_.size(); ++i) {
+        const long double e = energy_of(p_.mass[i], p_.vx_at(i, t), p_.vy_at(i, t));
+        total += e;
+        per_species[std::size_t(p_.species[i])] += e;
+      }
+      s.kinetic_energy.push_back(double(total));
+      for (std::size_t k = 0; k < per_species.size(); ++k) s.species_energy[k].push_back(double(per_species[k]));
+    } else {
+      s.kinetic_energy.push_back(double(total_));
+      for (std::size_t k = 0; k < species_sum_.size(); ++k) s.species_energy[k].push_back(double(species_sum_[k]));
+    }
     s.pair_collisions.push_back(pairs_);
     s.wall_collisions.push_back(walls_);
   }
@@ -143,7 +157,7 @@ Result<LogSeries> series_in(const std::shared_ptr<const LogReader>& log, const s
   const auto record_before = [&](const T* event_time) {
     for (; k < times.size() && (!event_time || T(times[k]) < *event_time); ++k) {
       out.time.push_back(times[k]);
-      walk.record(out);
+      walk.record(out, T(times[k]));
     }
   };
   Status s = replay.for_each_event(0, log->total_events(), [&](const ReplayedEvent<T>& e) {
@@ -174,8 +188,8 @@ Status snapshots_in(const std::shared_ptr<const LogReader>& log, const std::vect
     if (Status s = replay.seek_time(T(t)); !s) return s;
     snap.time = t;
     for (std::size_t i = 0; i < p.size(); ++i) {
-      snap.vx[i] = double(p.disk[i].vx);
-      snap.vy[i] = double(p.disk[i].vy);
+      snap.vx[i] = double(p.vx_at(i, T(t)));
+      snap.vy[i] = double(p.vy_at(i, T(t)));
     }
     f(snap);
   }

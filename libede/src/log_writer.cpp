@@ -78,7 +78,9 @@ LogRunInfo LogRunInfo::from(const Scene& scene, const EngineOptions& options, co
   r.ly = scene.ly;
   r.boundary = options.boundary;
   r.rebuild_interval = options.rebuild_interval;
-  r.tc_model = options.physics.tc > 0 && (options.physics.restitution != 1.0 || options.physics.wall_restitution != 1.0);
+  r.tc_model = options.physics.tc > 0 && !options.physics.elastic();
+  r.gx = options.physics.gravity[0];
+  r.gy = options.physics.gravity[1];
   return r;
 }
 
@@ -136,6 +138,8 @@ struct LogWriter<T>::Impl {
     h.setInitialEnergy(kinetic_energy(p));
     h.setTcModel(run.tc_model);
     h.setColumnEncoding(1);
+    h.setGravityX(run.gx);
+    h.setGravityY(run.gy);
     logfmt::RecordHeader rh;
     rh.kind = logfmt::RecordKind::Header;
     out.submit(rh, to_bytes(message));

@@ -40,4 +40,28 @@ inline Crossing<T> predict_crossing(const Disk<T>& d, const CellGrid<T>& grid, s
   return best;
 }
 
+// Under constant gravity a disk may leave its cell through either side of an axis (thrown up, it can fall
+// back through the bottom), so both sides are considered; the outer sides of a walled box are never
+// crossed. Ties as above.
+template <class T>
+inline Crossing<T> predict_crossing_accelerated(const Disk<T>& d, const CellGrid<T>& grid, std::int32_t cell, T gx,
+                                                T gy, T now) {
+  const std::int32_t cx = grid.cell_x(cell);
+  const std::int32_t cy = grid.cell_y(cell);
+  Crossing<T> best;
+  const auto consider = [&](bool open, T s, T u, T a, CrossDir dir) {
+    if (!open) return;
+    const T dt = time_to_reach_accelerated(s, u, a, now - d.t);
+    if (dt == kNever<T>) return;
+    T t = d.t + dt;
+    if (t < now) t = now;
+    if (t < best.time) best = {t, dir};
+  };
+  consider(cx + 1 < grid.nx(), grid.boundary_x(cx + 1) - d.x, -d.vx, -gx, kCrossRight);
+  consider(cx > 0, d.x - grid.boundary_x(cx), d.vx, gx, kCrossLeft);
+  consider(cy + 1 < grid.ny(), grid.boundary_y(cy + 1) - d.y, -d.vy, -gy, kCrossUp);
+  consider(cy > 0, d.y - grid.boundary_y(cy), d.vy, gy, kCrossDown);
+  return best;
+}
+
 }  // namespace ede

@@ -30,4 +30,26 @@ inline Candidate<T> predict_wall(const Disk<T>& d, T lx, T ly, T now) {
   return best;
 }
 
+// The same under constant gravity (gx, gy): each wall's time from time_to_reach_accelerated, in terms of
+// the distance to the wall (positive inside), its rate and its acceleration. A disk thrown towards the
+// ceiling may turn back before it (no event); a disk resting on the floor hits it again at once, which is
+// why gravity with inelastic walls needs the TC model or restitution above 0 (else the run stalls).
+template <class T>
+inline Candidate<T> predict_wall_accelerated(const Disk<T>& d, T lx, T ly, T gx, T gy, T now) {
+  Candidate<T> best;
+  const auto consider = [&](T s, T u, T a, WallId wall) {
+    const T dt = time_to_reach_accelerated(s, u, a, now - d.t);
+    if (dt == kNever<T>) return;
+    T t = d.t + dt;
+    if (t < now) t = now;
+    const Candidate<T> c{t, EventKind::Wall, wall};
+    if (c.before(best)) best = c;
+  };
+  consider(d.x - d.r, d.vx, gx, kWallLeft);
+  consider((lx - d.r) - d.x, -d.vx, -gx, kWallRight);
+  consider(d.y - d.r, d.vy, gy, kWallBottom);
+  consider((ly - d.r) - d.y, -d.vy, -gy, kWallTop);
+  return best;
+}
+
 }  // namespace ede

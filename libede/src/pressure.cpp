@@ -168,6 +168,9 @@ double PressureReport::henderson() const { return henderson_z(packing_fraction) 
 double PressureReport::expected_area() const { return has_walls() ? virial_area : area; }
 
 Result<PressureReport> measure_pressure(const std::shared_ptr<const LogReader>& log, const PressureOptions& o) {
+  if (log->header().gx != 0 || log->header().gy != 0)
+    return Error{log->path() + ": the run is under gravity: its pressure varies with height (hydrostatics), "
+                 "and the wall and virial estimates here assume a uniform gas"};
   if (o.blocks < 2) return Error{"at least 2 blocks are needed for an error estimate"};
   if (o.bins_per_block < 1 || o.blocks * o.bins_per_block > 10'000'000)
     return Error{"blocks x bins per block must be between 2 and 10^7"};

@@ -140,6 +140,8 @@ Result<std::unique_ptr<Replay<T>>> Replay<T>::create(std::shared_ptr<const LogRe
   }
   r->lx_ = T(h.lx);
   r->ly_ = T(h.ly);
+  r->state_.gx = T(h.gx);
+  r->state_.gy = T(h.gy);
   if (Status s = r->load_keyframe(0); !s) return s.error();
   r->last_event_time_initial_ = r->time_;
   return r;

@@ -71,10 +71,10 @@ RunSummary summarize(const EngineApi<T>& engine, double momentum_initial_x, doub
   s.collisions_per_particle = s.disks ? 2.0 * double(s.counts.of(EventKind::Pair)) / double(s.disks) : 0;
   s.sim_time = double(engine.time());
   s.energy_initial = engine.initial_kinetic_energy();
-  s.energy_final = kinetic_energy(engine.particles());
+  s.energy_final = kinetic_energy(engine.particles(), engine.time());
   s.momentum_initial[0] = momentum_initial_x;
   s.momentum_initial[1] = momentum_initial_y;
-  momentum(engine.particles(), s.momentum_final[0], s.momentum_final[1]);
+  momentum(engine.particles(), engine.time(), s.momentum_final[0], s.momentum_final[1]);
   s.engine_bytes = engine.memory_bytes();
   s.peak_rss_bytes = peak_rss_bytes();
   return s;

@@ -19,7 +19,9 @@ namespace {
 constexpr std::string_view kRootKeys[] = {"seed", "box",  "physics",  "engine", "log",
                                           "species", "stop", "sampling", "actions"};
 constexpr std::string_view kBoxKeys[] = {"size", "boundary"};
-constexpr std::string_view kPhysicsKeys[] = {"restitution", "wall_restitution", "tc"};
+constexpr std::string_view kPhysicsKeys[] = {"restitution", "wall_restitution", "tc", "gravity", "pairs"};
+constexpr std::string_view kWallRestitutionKeys[] = {"left", "right", "bottom", "top"};
+constexpr std::string_view kPairKeys[] = {"species", "restitution"};
 constexpr std::string_view kEngineKeys[] = {"scalar", "rebuild_interval"};
 constexpr std::string_view kLogKeys[] = {"keyframe_interval", "chunk_events", "compression_level"};
 constexpr std::string_view kSpeciesKeys[] = {"name",    "count",     "radius",  "mass",
@@ -37,6 +39,8 @@ namespace sections {
 const Section root{"the top level", kRootKeys};
 const Section box{"[box]", kBoxKeys};
 const Section physics{"[physics]", kPhysicsKeys};
+const Section wall_restitution{"physics.wall_restitution = { left, right, bottom, top }", kWallRestitutionKeys};
+const Section pair{"[[physics.pairs]]", kPairKeys};
 const Section engine{"[engine]", kEngineKeys};
 const Section log{"[log]", kLogKeys};
 const Section species{"[[species]]", kSpeciesKeys};
@@ -51,6 +55,7 @@ const Section action{"[[actions]]", kActionKeys};
 namespace {
 
 const Section* const kAllSections[] = {&sections::root,      &sections::box,      &sections::physics,
+                                       &sections::wall_restitution, &sections::pair,
                                        &sections::engine,    &sections::log,      &sections::species,
                                        &sections::radius,
                                        &sections::placement, &sections::velocity, &sections::stop,
@@ -180,7 +185,8 @@ namespace {
 const Section* section_for(std::string_view key) {  // the section of the table held under key, if any
   static const std::pair<std::string_view, const Section*> kTables[] = {
       {"box", &sections::box},           {"physics", &sections::physics}, {"engine", &sections::engine},
-      {"log", &sections::log},
+      {"log", &sections::log},           {"wall_restitution", &sections::wall_restitution},
+      {"pairs", &sections::pair},
       {"species", &sections::species},   {"radius", &sections::radius},   {"placement", &sections::placement},
       {"velocity", &sections::velocity}, {"stop", &sections::stop},       {"sampling", &sections::sampling},
       {"actions", &sections::action}};

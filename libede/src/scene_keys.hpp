@@ -61,7 +61,8 @@ struct Section {
 };
 
 namespace sections {
-extern const Section root, box, physics, engine, log, species, radius, placement, velocity, stop, sampling, action;
+extern const Section root, box, physics, wall_restitution, pair, engine, log, species, radius, placement, velocity,
+    stop, sampling, action;
 }
 
 // A checked scene tree as TOML text: keys in the order of the sections above (the order of the docs),

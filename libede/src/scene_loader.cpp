@@ -53,14 +53,47 @@ void read_box(const Reader& top, Scene& scene) {
   scene.boundary = boundary == 0 ? BoundaryKind::Walls : BoundaryKind::Periodic;
 }
 
+constexpr std::string_view kXiFix = "use a value from 0 (perfectly inelastic) to 1 (elastic)";
+
+// wall_restitution = 0.5, or { left = 1.0, bottom = 0.5 } for some walls (the others stay elastic).
+void read_wall_restitution(const Reader& p, PhysicsSpec& out) {
+  const toml::node* node = p.get("wall_restitution");
+  if (!node || !node->is_table()) {
+    out.wall_restitution = p.number("wall_restitution", Bounds::closed(0, 1), kXiFix).value_or(1);
+    return;
+  }
+  const Reader w = p.section("wall_restitution");
+  w.check_keys(sections::wall_restitution);
+  const char* sides[] = {"left", "right", "bottom", "top"};
+  for (int k = 0; k < 4; ++k) out.walls[std::size_t(k)] = w.number(sides[k], Bounds::closed(0, 1), kXiFix);
+}
+
+// [[physics.pairs]] species = ["bed", "projectile"], restitution = 0.5
+PairRestitution read_pair(const toml::node& node, std::size_t i, const Reader& p) {
+  const std::string path = "physics.pairs[" + std::to_string(i) + "]";
+  const toml::table* table = node.as_table();
+  if (!table) p.fail_node(&node, path, "expected a table", "write each pair as a [[physics.pairs]] table");
+  const Reader r(*table, path, p.origin());
+  r.check_keys(sections::pair);
+  const toml::array* names = r.array("species");
+  if (!names || names->size() != 2 || !names->get(0)->is_string() || !names->get(1)->is_string())
+    r.fail("species", "expected two species names", "write species = [\"bed\", \"projectile\"]");
+  const auto value = r.number("restitution", Bounds::closed(0, 1), kXiFix);
+  if (!value) missing(r, "restitution", "a pair needs its restitution", "restitution = 0.5");
+  return {names->get(0)->value<std::string>().value_or(""), names->get(1)->value<std::string>().value_or(""),
+          *value};
+}
+
 PhysicsSpec read_physics(const Reader& top) {
   const Reader p = top.section("physics");
   p.check_keys(sections::physics);
-  const std::string_view xi_fix = "use a value from 0 (perfectly inelastic) to 1 (elastic)";
   PhysicsSpec out;
-  out.restitution = p.number("restitution", Bounds::closed(0, 1), xi_fix).value_or(1);
-  out.wall_restitution = p.number("wall_restitution", Bounds::closed(0, 1), xi_fix).value_or(1);
+  out.restitution = p.number("restitution", Bounds::closed(0, 1), kXiFix).value_or(1);
+  read_wall_restitution(p, out);
   out.tc = p.number("tc", Bounds::non_negative(), "use 0 (TC model off) or a positive time").value_or(0);
+  if (const auto g = p.numbers("gravity", 2, "[gx, gy]", Bounds::any())) out.gravity = {(*g)[0], (*g)[1]};
+  if (const toml::array* list = p.array("pairs"))
+    for (std::size_t i = 0; i < list->size(); ++i) out.pairs.push_back(read_pair(*list->get(i), i, p));
   return out;
 }
 
@@ -390,6 +423,29 @@ std::vector<ActionSpec> read_actions(const Reader& top) {
   return out;
 }
 
+// Rules that span tables: pair restitution names real species; gravity needs walls (in a periodic box
+// everything would fall forever) and cannot stop on kinetic energy (it changes between collisions).
+void check_physics(const Reader& top, const Scene& scene) {
+  const Reader p = top.section("physics");
+  for (const PairRestitution& pair : scene.physics.pairs)
+    for (const std::string& name : {pair.a, pair.b}) {
+      bool found = false;
+      for (const SpeciesSpec& sp : scene.species) found = found || sp.name == name;
+      if (!found) {
+        std::string known;
+        for (const SpeciesSpec& sp : scene.species) known += (known.empty() ? "" : ", ") + sp.name;
+        p.fail("pairs", "there is no species '" + name + "'", "use the names of the species: " + known);
+      }
+    }
+  if (scene.physics.has_gravity() && scene.boundary == BoundaryKind::Periodic)
+    p.fail("gravity", "gravity needs walls: in a periodic box every disk would fall forever",
+           "use box.boundary = \"walls\", or remove gravity");
+  if (scene.physics.has_gravity() && scene.stop.energy_fraction)
+    top.section("stop").fail("energy_fraction",
+                             "with gravity the kinetic energy changes between collisions, so it cannot stop a run",
+                             "stop on time (stop.time) or on events");
+}
+
 Scene scene_from_tree(const toml::table& root, const Origin& origin) {
   const Reader top(root, "", origin);
   top.check_keys(sections::root);
@@ -403,6 +459,7 @@ Scene scene_from_tree(const toml::table& root, const Origin& origin) {
   scene.stop = read_stop(top);
   scene.sample_interval = read_sampling(top);
   scene.actions = read_actions(top);
+  check_physics(top, scene);
   return scene;
 }
 

@@ -25,7 +25,7 @@ void write_state_csv(std::FILE* out, const Particles<T>& p, T time, const std::v
       std::fputs(species_names[std::size_t(s)].c_str(), out);
     else
       std::fprintf(out, "%d", s);
-    for (T v : {p.x_at(i, time), p.y_at(i, time), d.vx, d.vy, d.r, p.mass[i]}) {
+    for (T v : {p.x_at(i, time), p.y_at(i, time), p.vx_at(i, time), p.vy_at(i, time), d.r, p.mass[i]}) {
       std::fputc(',', out);
       put(out, v);
     }

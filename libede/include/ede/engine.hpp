@@ -108,10 +108,15 @@ template <class T>
 Result<std::unique_ptr<EngineApi<T>>> make_engine(const InitialState& initial, const EngineOptions& options,
                                                   const ResumePoint<T>* resume = nullptr);
 
-// Sums over a state at time t, accumulated in long double whatever T is.
+// Sums over a state, accumulated in long double whatever T is: from the records' velocities, or (the
+// overloads with a time) from the velocities at time t, which differ under gravity.
 template <class T>
 double kinetic_energy(const Particles<T>& p);
 template <class T>
 void momentum(const Particles<T>& p, double& px, double& py);
+template <class T>
+double kinetic_energy(const Particles<T>& p, T t);
+template <class T>
+void momentum(const Particles<T>& p, T t, double& px, double& py);
 
 }  // namespace ede

@@ -34,6 +34,7 @@ struct LogHeaderInfo {
   std::vector<std::uint32_t> species;
   double initial_energy = 0;
   bool tc_model = false;
+  double gx = 0, gy = 0;  // gravity
 };
 
 struct LogRecordRef {

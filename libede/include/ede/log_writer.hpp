@@ -42,6 +42,7 @@ struct LogRunInfo {
   BoundaryKind boundary = BoundaryKind::Walls;
   std::uint64_t rebuild_interval = 0;
   bool tc_model = false;
+  double gx = 0, gy = 0;  // gravity
   static LogRunInfo from(const Scene& scene, const EngineOptions& options, const std::vector<std::string>& species);
 };
 

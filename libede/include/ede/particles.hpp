@@ -37,10 +37,15 @@ struct Particles {
   std::vector<T> mass;
   std::vector<std::int32_t> species;
   std::vector<T> last_collision;  // TC model only (else empty): time of each disk's last collision
+  T gx{}, gy{};                   // the constant gravity the disks fall under between events (usually 0)
 
   std::size_t size() const { return disk.size(); }
-  T x_at(std::size_t i, T t) const { return drift(disk[i].x, disk[i].vx, disk[i].t, t); }
-  T y_at(std::size_t i, T t) const { return drift(disk[i].y, disk[i].vy, disk[i].t, t); }
+  // Position and velocity of disk i at time t (>= its record's time), by the shared functions of drift.hpp.
+  // Without gravity the velocity is the record's; with gravity, read it here, not from disk[i].vx.
+  T x_at(std::size_t i, T t) const { return position_along(disk[i].x, disk[i].vx, gx, disk[i].t, t); }
+  T y_at(std::size_t i, T t) const { return position_along(disk[i].y, disk[i].vy, gy, disk[i].t, t); }
+  T vx_at(std::size_t i, T t) const { return velocity_along(disk[i].vx, gx, disk[i].t, t); }
+  T vy_at(std::size_t i, T t) const { return velocity_along(disk[i].vy, gy, disk[i].t, t); }
 };
 
 }  // namespace ede

@@ -79,10 +79,30 @@ struct ActionSpec {
   ActionKind kind = ActionKind::ReverseVelocities;
 };
 
+struct PairRestitution {  // the restitution between disks of two species (by name), overriding the default
+  std::string a, b;
+  double value = 1;
+};
+
+enum WallSide { kLeftWall = 0, kRightWall = 1, kBottomWall = 2, kTopWall = 3 };  // the order of ede::WallId
+
 struct PhysicsSpec {
-  double restitution = 1;       // xi for pair collisions, in [0, 1]
-  double wall_restitution = 1;  // xi_w for wall collisions, in [0, 1]
-  double tc = 0;                // TC model: a collision within tc of a participant's previous one is elastic
+  double restitution = 1;       // xi for pair collisions, in [0, 1]: every pair of species unless in `pairs`
+  double wall_restitution = 1;  // xi_w for wall collisions, in [0, 1]: every wall unless in `walls`
+  std::array<std::optional<double>, 4> walls;  // per wall (left, right, bottom, top)
+  std::vector<PairRestitution> pairs;
+  double tc = 0;                       // TC model: a collision within tc of a participant's previous one is elastic
+  std::array<double, 2> gravity{0, 0};  // constant acceleration (walls only)
+
+  double wall(int side) const { return walls[std::size_t(side)].value_or(wall_restitution); }
+  bool has_gravity() const { return gravity[0] != 0 || gravity[1] != 0; }
+  // Every collision elastic: no restitution below 1 anywhere.
+  bool elastic() const {
+    bool all = restitution == 1;
+    for (int w = 0; w < 4; ++w) all = all && wall(w) == 1;
+    for (const PairRestitution& p : pairs) all = all && p.value == 1;
+    return all;
+  }
 };
 
 struct LogSpec {  // how ede-sim -o writes the event log; never changes the simulation itself

@@ -19,6 +19,16 @@ inline void advance_disk(Disk<T>& d, T t) {
   d.t = t;
 }
 
+// The same under constant gravity (gx, gy): position and velocity at t.
+template <class T>
+inline void advance_disk(Disk<T>& d, T t, T gx, T gy) {
+  d.x = position_along(d.x, d.vx, gx, d.t, t);
+  d.y = position_along(d.y, d.vy, gy, d.t, t);
+  d.vx = velocity_along(d.vx, gx, d.t, t);
+  d.vy = velocity_along(d.vy, gy, d.t, t);
+  d.t = t;
+}
+
 // A periodic wrap: the record is brought to t, then moved by one box length across the crossed edge.
 template <class T>
 inline void wrap_disk(Disk<T>& d, T t, std::int32_t dir, T lx, T ly) {
@@ -36,6 +46,13 @@ inline void wrap_disk(Disk<T>& d, T t, std::int32_t dir, T lx, T ly) {
 template <class T>
 inline void reverse_disk(Disk<T>& d, T t) {
   advance_disk(d, t);
+  d.vx = -d.vx;
+  d.vy = -d.vy;
+}
+
+template <class T>
+inline void reverse_disk(Disk<T>& d, T t, T gx, T gy) {
+  advance_disk(d, t, gx, gy);
   d.vx = -d.vx;
   d.vy = -d.vy;
 }
