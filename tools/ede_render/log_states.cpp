@@ -87,7 +87,7 @@ class TypedLogStates final : public LogStates {
       f.x.push_back(x);
       f.y.push_back(y);
       f.r.push_back(double(p.disk[i].r));
-      f.speed.push_back(std::hypot(double(p.disk[i].vx), double(p.disk[i].vy)));
+      f.speed.push_back(std::hypot(double(p.vx_at(i, t)), double(p.vy_at(i, t))));
       f.displacement.push_back(std::hypot(dx, dy));
       f.species.push_back(p.species[i]);
     }
