@@ -69,7 +69,11 @@ inline ede::InitialState make_state(Bytes& in) {
     const double x = (k % side + 0.5) * cell + (2 * in.unit() - 1) * room * 0.99;
     const double y = (k / side + 0.5) * cell + (2 * in.unit() - 1) * room * 0.99;
     const double m = heavy && k == 0 ? 1e4 : 0.1 + 10 * in.unit();
-    s.add(x, y, 2 * in.unit() - 1, 2 * in.unit() - 1, r, m, 0);
+    // Sequenced: the order of evaluation of function arguments is unspecified (GCC and Clang differ),
+    // and an input must mean the same scene to every compiler.
+    const double vx = 2 * in.unit() - 1;
+    const double vy = 2 * in.unit() - 1;
+    s.add(x, y, vx, vy, r, m, 0);
   }
   return s;
 }

@@ -59,6 +59,27 @@ TEST_CASE("samples come at exact times and do not disturb the run", "[run][sampl
   }
 }
 
+TEST_CASE("samples of a frozen state end the run instead of going on for ever", "[run][sample]") {
+  // Disks at rest, an event-count stop that can never be reached, samples and a late action: the samples
+  // up to the action are taken, the action is applied, and then, with nothing that can ever happen and no
+  // stop time, the run ends (found by fuzz_scene as a hang).
+  InitialState s = box();
+  s.add(0.3, 0.5, 0.0, 0.0, 0.05, 1.0, 0);
+  s.add(0.7, 0.5, 0.0, 0.0, 0.05, 1.0, 0);
+  EngineOptions o;
+  o.boundary = BoundaryKind::Periodic;
+  o.stop.events = 450;
+  o.sample_interval = 0.1;
+  o.actions.push_back(ActionSpec{0.5, ActionKind::ReverseVelocities});
+  Recorder<double> rec;
+  auto e = engine(s, o);
+  e->add_sink(&rec);
+  CHECK(e->run(3) == RunStatus::Running);  // samples count towards run(n): a caller always gets control back
+  CHECK(e->run() == RunStatus::NoMoreEvents);
+  CHECK(rec.sample_times.size() == 5);  // 0.1 ... 0.5: the action at 0.5 comes first, its sample after
+  CHECK(e->counts().of(EventKind::Action) == 1);
+}
+
 TEST_CASE("the same input gives the same events, bit for bit", "[run][determinism]") {
   const InitialState s = lattice_gas(30, 0.008, 1.0, 5);
   std::uint64_t first = 0;

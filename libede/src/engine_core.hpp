@@ -134,8 +134,9 @@ class Engine final : public EngineApi<T> {
         reverse_velocities(t_action);
         ++done;
         if (const RunStatus s = check_stops(); s != RunStatus::Running) return finish(s);
-      } else if (t_sample != kNever<T> && t_sample <= t_stop) {
+      } else if (t_sample != kNever<T> && t_sample <= t_stop && !frozen_after(t_sample, next.time, t_action, t_stop)) {
         sample(t_sample);
+        ++done;  // samples count towards max_events, so a caller's run(n) always returns
       } else if (t_stop != kNever<T>) {
         now_ = t_stop;
         return finish(RunStatus::ReachedTime);
@@ -144,6 +145,13 @@ class Engine final : public EngineApi<T> {
       }
     }
     return RunStatus::Running;
+  }
+
+  // Nothing left to happen and no stop time: samples after now would observe the same state for ever
+  // (disks at rest with only an event-count stop, say), so the run ends with NoMoreEvents instead of
+  // sampling on. A sample at now itself (the time of the last action) is still taken.
+  bool frozen_after(T t_sample, T t_event, T t_action, T t_stop) const {
+    return t_sample > now_ && t_event == kNever<T> && t_action == kNever<T> && t_stop == kNever<T>;
   }
 
   double largest_overlap() const override {
@@ -272,10 +280,26 @@ class Engine final : public EngineApi<T> {
 
   // A pair that has just collided (each is the other's last partner, no velocity change since) cannot
   // meet again through the image they collided in: straight lines cross a circle once on the way in.
-  // Skipping it keeps round-off from turning their separation into a spurious second collision at once.
+  // Skipping it keeps round-off from turning their separation into a spurious second collision at once
+  // (for xi = 0 the post-collision approach speed is zero up to round-off in the velocities, which can
+  // exceed the position floor of pair_contact_time when both disks move fast).
+  // In a walled box that is the whole story. In a periodic box the pair can meet again through another
+  // image after a long flight, and the image they collided in is not recorded: it is the one in which they
+  // still touch (to kJustCollidedRange), since two images of one disk can never both touch (L >= 3 cells).
+  // A pair far apart in the collision image is receding there (b > 0), so nothing needs skipping. And a
+  // pair that touches while approaching faster than round-off (b clearly negative) arrived through another
+  // image: it is never skipped, so no window is left in which a real collision could be missed.
   bool just_collided(std::int32_t i, std::int32_t k, T dx, T dy) const {
     if (p_.disk[i].last_partner != k || p_.disk[k].last_partner != i) return false;
-    if constexpr (kPeriodic) return std::abs(dx) <= half_lx_ && std::abs(dy) <= half_ly_;
+    if constexpr (kPeriodic) {
+      const Disk<T>&di = p_.disk[i], &dk = p_.disk[k];
+      const T s = di.r + dk.r;
+      if (dx * dx + dy * dy > s * s * (T(1) + T(1e-6))) return false;
+      const Position2<T> vi = vel_at(di), vk = vel_at(dk);
+      const T b = dx * (vk.x - vi.x) + dy * (vk.y - vi.y);
+      const T speeds = std::abs(vi.x) + std::abs(vi.y) + std::abs(vk.x) + std::abs(vk.y);
+      return b >= -T(64) * std::numeric_limits<T>::epsilon() * s * speeds;
+    }
     return true;
   }
 

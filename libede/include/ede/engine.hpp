@@ -84,8 +84,8 @@ class EngineApi {
   virtual ~EngineApi() = default;
   // Sinks are called in the order added; the caller keeps them alive for the engine's lifetime.
   virtual void add_sink(Sink<T>* sink) = 0;
-  // Processes events until a stop condition holds (returns it) or max_events more events were processed
-  // (returns Running). The first call reports the initial state to sinks (on_start).
+  // Processes events until a stop condition holds (returns it) or max_events more events and samples were
+  // processed (returns Running). The first call reports the initial state to sinks (on_start).
   virtual RunStatus run(std::uint64_t max_events = std::numeric_limits<std::uint64_t>::max()) = 0;
   virtual T time() const = 0;
   virtual const Particles<T>& particles() const = 0;
