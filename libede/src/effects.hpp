@@ -43,4 +43,13 @@ struct UniformGravity {
   static constexpr bool kGravity = true;
 };
 
+// The pair contact-time root. Engines always use the stable form (geometry.hpp); the textbook form exists
+// only so that ede-bench accuracy can show what it costs in accuracy (EngineOptions::contact).
+struct StableContact {
+  static constexpr bool kTextbook = false;
+};
+struct TextbookContact {
+  static constexpr bool kTextbook = true;
+};
+
 }  // namespace ede

@@ -41,8 +41,9 @@ struct GridShape {
 GridShape grid_shape_for(double lx, double ly, double max_radius, std::size_t disks, bool periodic,
                          Algorithm algorithm);
 
-template <class T, class Boundary, class Dissipation, class Field = NoField>
+template <class T, class Boundary, class Dissipation, class Field = NoField, class Contact = StableContact>
 class Engine final : public EngineApi<T> {
+  static constexpr bool kTextbook = Contact::kTextbook;
   static constexpr bool kPeriodic = Boundary::kPeriodic;
   static constexpr bool kInelastic = Dissipation::kInelastic;
   static constexpr bool kTc = Dissipation::kTc;
@@ -106,6 +107,7 @@ class Engine final : public EngineApi<T> {
       s << "elastic";
     }
     if constexpr (kGravity) s << ", gravity (" << opt_.physics.gravity[0] << ", " << opt_.physics.gravity[1] << ")";
+    if constexpr (kTextbook) s << ", textbook contact root";
     s << ", grid " << grid_.nx() << "x" << grid_.ny();
     return s.str();
   }
@@ -322,11 +324,11 @@ class Engine final : public EngineApi<T> {
   T pair_time(const Disk<T>& di, Position2<T> pi, Position2<T> vi, const Disk<T>& dk, T sx, T sy) const {
     if constexpr (kGravity) {
       const Position2<T> pk = pos_at(dk), vk = vel_at(dk);
-      return now_ + pair_contact_time((pk.x + sx) - pi.x, (pk.y + sy) - pi.y, vk.x - vi.x, vk.y - vi.y,
-                                      di.r + dk.r, b_noise2_);
+      return now_ + contact_time<kTextbook>((pk.x + sx) - pi.x, (pk.y + sy) - pi.y, vk.x - vi.x, vk.y - vi.y,
+                                            di.r + dk.r, b_noise2_);
     } else {
       (void)vi;
-      return predict_pair(di, pi, dk, sx, sy, now_, b_noise2_);
+      return predict_pair<kTextbook>(di, pi, dk, sx, sy, now_, b_noise2_);
     }
   }
 

@@ -39,6 +39,26 @@ Status check_resume_point(const InitialState& init, const EngineOptions& options
   return Ok{};
 }
 
+// The study variants of EngineOptions (contact root, all effects): a few instantiations, not all.
+template <class T>
+Result<std::unique_ptr<EngineApi<T>>> make_study_engine(const InitialState& init, const EngineOptions& o,
+                                                        GridShape shape, const ResumePoint<T>* resume) {
+  const bool periodic = o.boundary == BoundaryKind::Periodic;
+  if (o.all_effects) {
+    if (periodic || o.contact != ContactRoot::Stable)
+      return Error{"the all-effects engine is built for walls and the stable contact root only"};
+    return std::unique_ptr<EngineApi<T>>(
+        std::make_unique<Engine<T, WallsBoundary, InelasticTc, UniformGravity>>(init, o, shape, resume));
+  }
+  if (!o.physics.elastic() || o.physics.has_gravity())
+    return Error{"the textbook contact root is built for elastic scenes without gravity only"};
+  if (periodic)
+    return std::unique_ptr<EngineApi<T>>(
+        std::make_unique<Engine<T, PeriodicBoundary, Elastic, NoField, TextbookContact>>(init, o, shape, resume));
+  return std::unique_ptr<EngineApi<T>>(
+      std::make_unique<Engine<T, WallsBoundary, Elastic, NoField, TextbookContact>>(init, o, shape, resume));
+}
+
 template <class T>
 Result<std::unique_ptr<EngineApi<T>>> make_engine(const InitialState& init, const EngineOptions& options,
                                                   const ResumePoint<T>* resume) {
@@ -46,6 +66,8 @@ Result<std::unique_ptr<EngineApi<T>>> make_engine(const InitialState& init, cons
   if (Status s = check_engine_input(init, options, shape); !s) return s.error();
   if (resume)
     if (Status s = check_resume_point(init, options, *resume); !s) return s.error();
+  if (options.all_effects || options.contact != ContactRoot::Stable)
+    return make_study_engine<T>(init, options, shape, resume);
   if (options.boundary == BoundaryKind::Periodic)
     return make_engine_for_boundary<T, PeriodicBoundary>(init, options, shape, resume);
   if (options.physics.has_gravity())

@@ -47,14 +47,16 @@ inline T b_noise2_for(T length) {
   return floor * floor;
 }
 
-// The textbook root (-b - sqrt(d)) / a: only for the accuracy study, never used by the engine.
+// The textbook root (-b - sqrt(d)) / a, with the same early outs (and round-off floor) as above so that
+// only the root differs: for the accuracy study (ede-bench accuracy, TextbookContact engines) only.
 template <class T>
-inline T pair_contact_time_textbook(T dx, T dy, T dvx, T dvy, T s) {
+inline T pair_contact_time_textbook(T dx, T dy, T dvx, T dvy, T s, T b_noise2 = T(0)) {
   const T b = dx * dvx + dy * dvy;
   if (!(b < 0)) return kNever<T>;
+  const T a = dvx * dvx + dvy * dvy;
+  if (b * b <= b_noise2 * a) return kNever<T>;
   const T c = (dx * dx + dy * dy) - s * s;
   if (c <= 0) return T(0);
-  const T a = dvx * dvx + dvy * dvy;
   const T d = b * b - a * c;
   if (!(d > 0)) return kNever<T>;
   const T t = (-b - std::sqrt(d)) / a;

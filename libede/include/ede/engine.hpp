@@ -27,6 +27,8 @@ enum class Algorithm {
   AllPairs,  // the naive baseline: after each event, the disks involved are checked against all N others
 };
 
+enum class ContactRoot { Stable, Textbook };
+
 struct EngineOptions {
   BoundaryKind boundary = BoundaryKind::Walls;
   PhysicsSpec physics;
@@ -41,6 +43,13 @@ struct EngineOptions {
   // Give up (RunStatus::Stalled) after this many consecutive events at one and the same time
   // (0: max(10^6, 100 N)).
   std::uint64_t stall_limit = 0;
+  // Study variants (ede-bench); scenes never set them, and runs with them are not for results.
+  // Textbook: the cancellation-prone root (-b - sqrt(d))/a for pair contact times (accuracy study; built
+  // for elastic scenes without gravity only).
+  ContactRoot contact = ContactRoot::Stable;
+  // The one instantiation that carries every effect (walls, inelastic with TC and per-pair restitution,
+  // gravity), whatever the scene uses: the "no specialization" baseline of ede-bench effects. Walls only.
+  bool all_effects = false;
 };
 
 // The engine options a scene asks for; `disks` sizes the automatic rebuild interval.
