@@ -153,6 +153,23 @@ TEST_CASE("gravity: an inelastic bed with TC settles without stalling", "[gravit
   CHECK(highest < 0.6);  // 225 disks of radius 0.015 on a unit floor: a few layers, well below 0.6
 }
 
+TEST_CASE("gravity: a ball bouncing to rest without TC stalls with a message that says why", "[gravity][inelastic]") {
+  // xi_w = 0.5: the bounces shorten geometrically and add up to a finite time (a Zeno sequence); the run
+  // must end with Stalled and a message about resting contact and the TC model, not hang or sink.
+  InitialState s = box();
+  s.add(0.5, 0.3, 0.0, 0.0, 0.05, 1.0, 0);
+  EngineOptions o = under_gravity(1.0, 100.0);
+  o.physics.wall_restitution = 0.5;
+  o.stall_limit = 1000;
+  auto e = engine(s, o);
+  REQUIRE(e->run() == RunStatus::Stalled);
+  CHECK(e->stall_message().find("resting contact") != std::string::npos);
+  CHECK(e->stall_message().find("physics.tc") != std::string::npos);
+  const double h = 0.25, t_rest = std::sqrt(2 * h) * (1 + 2 * 0.5 / (1 - 0.5));  // drop, then 2 t_k per bounce
+  CHECK(e->time() == Approx(t_rest).epsilon(1e-6));
+  CHECK(y_now(*e, 0) >= 0.05 * (1 - 1e-12));
+}
+
 TEST_CASE("gravity: scenes refuse it with a periodic box or a kinetic-energy stop", "[gravity][scene]") {
   const auto bad_periodic = parse_scene_text(
       "[box]\nboundary = \"periodic\"\n[physics]\ngravity = [0, -1]\n[[species]]\nname = \"a\"\ncount = 3\n"

@@ -603,8 +603,14 @@ class Engine final : public EngineApi<T> {
       std::ostringstream m;
       m << "the simulation stalled at t = " << double(now_) << ": " << same_time_events_
         << " consecutive events without time advancing (inelastic collapse). ";
+      if constexpr (kGravity)
+        m << "Under gravity, disks settling on the floor or on each other bounce ever lower and ever faster: "
+             "resting contact is not a state an event-driven run can reach. ";
       if constexpr (kTc)
-        m << "Increase physics.tc (now " << opt_.physics.tc << ").";
+        m << "Increase physics.tc (now " << opt_.physics.tc << ")"
+          << (kGravity ? " so that settled disks keep hopping elastically at a height of about g tc^2 / 8, and keep "
+                         "wall_restitution above 0."
+                       : ".");
       else
         m << "Enable the TC model (physics.tc > 0, e.g. 1e-3 of the mean free time) or raise the restitution.";
       stall_message_ = m.str();
