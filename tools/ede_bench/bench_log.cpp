@@ -1,47 +1,25 @@
-// The event-log benchmark; see bench_log.hpp.
-//
-// Every timed measurement runs in its own child process (run_in_child: a clean heap, and the log writer's
-// second thread is the child's own, so getrusage(RUSAGE_SELF) in the child is the CPU time of exactly
-// one run's two threads). Only the event loop is timed, writer start-up and scene setup are not; the
-// writer's final flush is inside the loop's last call (on_finish), so the time to drain its queue counts.
+// The event-log benchmark; see bench_log.hpp. One run, a log's shape and seeking are measured by the
+// pieces of log_measure.hpp (shared with ede-bench accuracy), each timed run in its own child process.
 // Log sizes do not depend on timing (the writer's bytes are a function of the events), so they come from
 // one run and are checked equal across repeats; times are medians over repeats, and within a repeat the
 // configurations run one after the other, so a slow phase of a shared machine hits all of them alike
 // and the per-repeat ratios (log on / log off) stay meaningful. The parent reads the logs afterwards
 // (sizes, keyframe share, columns) and deletes them.
-// Rejected: timing `ede-sim -o` from outside (progress, summary and setup get mixed in, and the worker
-// thread's CPU time is not separable from the main thread's).
 #include "bench_log.hpp"
 
-#include <sys/resource.h>
-
 #include <algorithm>
-#include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <map>
-#include <memory>
-#include <sstream>
 
 #include "bench_common.hpp"
 #include "cpu_cycles.hpp"
-#include "ede/engine.hpp"
-#include "ede/log_column_sizes.hpp"
-#include "ede/log_reader.hpp"
-#include "ede/log_writer.hpp"
-#include "ede/replay.hpp"
-#include "ede/scene_loader.hpp"
-#include "ede/setup.hpp"
-#include "scalar_dispatch.hpp"
+#include "log_measure.hpp"
 
 namespace ede::bench {
 
 namespace {
 
-constexpr int kSeekTimes = 20;
 constexpr std::uint64_t kFrequentKeyframes = 1u << 14;  // one keyframe per chunk of the default size
-constexpr const char* kNoRebuilds = "engine.rebuild_interval=1099511627776";  // 2^40: only the one at start
 
 // ---------------------------------------------------------------------------------------------- helpers
 
@@ -58,145 +36,6 @@ std::string share(double part, double whole) {
 }
 
 std::string mib(double bytes) { return fmt(bytes / 1048576, 4); }
-
-std::string power_of_two(std::uint64_t v) {
-  int k = 0;
-  while ((std::uint64_t(1) << k) < v) ++k;
-  return (std::uint64_t(1) << k) == v ? "2^" + std::to_string(k) : std::to_string(v);
-}
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-struct CpuTimes {
-  double process = 0, thread = 0;  // user + system seconds: all threads, the calling thread
-};
-
-CpuTimes cpu_times() {
-  const auto seconds = [](const rusage& u) {
-    return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-  };
-  rusage self{}, thread{};
-  getrusage(RUSAGE_SELF, &self);
-  getrusage(RUSAGE_THREAD, &thread);
-  return {seconds(self), seconds(thread)};
-}
-
-// ------------------------------------------------------------------------------------- one timed run
-
-struct RunConfig {
-  std::string label;
-  std::string scene;
-  std::uint64_t events = 0;            // stop.events override (0: the scene's)
-  std::vector<std::string> overrides;  // more scene overrides
-  bool log = false;
-  LogSettings settings;
-  std::string log_path;
-};
-
-struct RunResult {
-  bool ok = false;
-  std::string failure;
-  double disks = 0, events = 0, collisions = 0, logged = 0, bytes = 0, sim_time = 0;
-  double wall = 0, cycles = 0, cpu_process = 0, cpu_main = 0;
-  double cpu_worker() const { return std::max(0.0, cpu_process - cpu_main); }
-};
-
-template <class T>
-int timed_run(const RunConfig& c, const Scene& scene, const InitialState& initial, const EngineOptions& options,
-              std::string& out) {
-  auto made = make_engine<T>(initial, options);
-  if (!made) return out = made.error().message, 1;
-  EngineApi<T>& engine = *made.value();
-  std::unique_ptr<LogWriter<T>> log;
-  if (c.log) {
-    auto w = LogWriter<T>::create(c.log_path, LogRunInfo::from(scene, options, initial.species_names), c.settings);
-    if (!w) return out = w.error().message, 1;
-    log = std::move(w).value();
-    engine.add_sink(log.get());
-  }
-  tools::CpuCycles cycles;
-  const CpuTimes cpu0 = cpu_times();
-  cycles.start();
-  const auto start = std::chrono::steady_clock::now();
-  engine.run();
-  const double wall = seconds_since(start);
-  const std::uint64_t cyc = cycles.stop();
-  const CpuTimes cpu1 = cpu_times();
-  if (log && !log->error().empty()) return out = "the log failed: " + log->error(), 1;
-  const EventCounts& n = engine.counts();
-  std::ostringstream o;
-  o.precision(17);
-  o << "disks=" << initial.size() << " events=" << n.events() << " collisions=" << n.collisions()
-    << " logged=" << (log ? log->events_logged() : 0) << " bytes=" << (log ? log->bytes_written() : 0)
-    << " sim_time=" << double(engine.time()) << " wall=" << wall << " cycles=" << cyc
-    << " cpu_process=" << cpu1.process - cpu0.process << " cpu_main=" << cpu1.thread - cpu0.thread;
-  out = o.str();
-  return 0;
-}
-
-int run_child(const RunConfig& c, std::string& out) {
-  std::vector<Override> overrides;
-  if (c.events) overrides.push_back({"stop.events=" + std::to_string(c.events)});
-  for (const std::string& s : c.overrides) overrides.push_back({s});
-  auto scene = load_scene_file(c.scene, overrides);
-  if (!scene) return out = scene.error().message, 1;
-  auto initial = build_initial_state(scene.value());
-  if (!initial) return out = initial.error().message, 1;
-  const EngineOptions options = engine_options_from(scene.value(), initial.value().size());
-  return tools::with_scalar(scene.value().scalar, [&]<class T>() {
-    return timed_run<T>(c, scene.value(), initial.value(), options, out);
-  });
-}
-
-RunResult run_measured(const RunConfig& c) {
-  const ChildMeasurement r = run_child_measurement([&](std::string& out) { return run_child(c, out); });
-  RunResult m;
-  m.ok = r.ok;
-  m.failure = r.failure;
-  if (!r.ok) return m;
-  const KeyValues& kv = r.values;
-  m.disks = get(kv, "disks"), m.events = get(kv, "events"), m.collisions = get(kv, "collisions");
-  m.logged = get(kv, "logged"), m.bytes = get(kv, "bytes"), m.sim_time = get(kv, "sim_time");
-  m.wall = get(kv, "wall"), m.cycles = get(kv, "cycles");
-  m.cpu_process = get(kv, "cpu_process"), m.cpu_main = get(kv, "cpu_main");
-  return m;
-}
-
-// ------------------------------------------------------------------------------ what a log is made of
-
-struct LogShape {
-  bool ok = false;
-  std::string failure;
-  double file_bytes = 0, events = 0, chunks = 0, chunk_payload = 0;
-  double keyframes = 0, resumable_keyframes = 0, keyframe_payload = 0;
-  LogColumnSizes columns;  // filled when asked for
-};
-
-LogShape read_shape(const std::string& path, int columns_level) {
-  LogShape s;
-  auto log = LogReader::open(path);
-  if (!log) return s.failure = log.error().message, s;
-  const LogReader& r = *log.value();
-  if (!r.complete()) return s.failure = path + ": incomplete log: " + r.incomplete_reason(), s;
-  s.file_bytes = double(r.file_size());
-  s.events = double(r.total_events());
-  s.chunks = double(r.chunks().size());
-  for (const LogRecordRef& c : r.chunks()) s.chunk_payload += double(c.payload_size);
-  s.keyframes = double(r.keyframes().size());
-  for (const LogRecordRef& k : r.keyframes()) {
-    s.keyframe_payload += double(k.payload_size);
-    s.resumable_keyframes += k.resumable ? 1 : 0;
-  }
-  if (columns_level > 0) {
-    auto cols = log_column_sizes(r, columns_level);
-    if (!cols) return s.failure = cols.error().message, s;
-    s.columns = std::move(cols).value();
-  }
-  s.ok = true;
-  return s;
-}
 
 // ------------------------------------------------------------------ configurations run side by side
 
@@ -430,124 +269,13 @@ void print_overhead(const std::vector<Series*>& rows, bool have_cycles) {
 
 // ------------------------------------------------------------------------------------------- 4. seek
 
-struct SeekResult {
-  bool ok = false;
-  std::string failure;
-  double open = 0, replay_wall = 0, replay_events = 0;
-  std::vector<double> create, seek;  // per seek time
-};
-
-template <class T>
-int seek_child_typed(const std::shared_ptr<const LogReader>& log, double open_seconds, std::string& out) {
-  std::ostringstream o;
-  o.precision(17);
-  o << "open=" << open_seconds;
-  T t_end{};
-  {
-    auto probe = Replay<T>::create(log);
-    if (!probe) return out = probe.error().message, 1;
-    t_end = probe.value()->final_time();
-  }
-  for (int k = 0; k < kSeekTimes; ++k) {
-    const T t = t_end * T(k + 0.37) / T(kSeekTimes);
-    const auto t0 = std::chrono::steady_clock::now();
-    auto replay = Replay<T>::create(log);
-    if (!replay) return out = replay.error().message, 1;
-    const double create = seconds_since(t0);
-    const auto t1 = std::chrono::steady_clock::now();
-    if (Status s = replay.value()->seek_time(t); !s) return out = s.error().message, 1;
-    o << " create_" << k << "=" << create << " seek_" << k << "=" << seconds_since(t1);
-  }
-  auto replay = Replay<T>::create(log);
-  if (!replay) return out = replay.error().message, 1;
-  const auto t0 = std::chrono::steady_clock::now();
-  const Status s = replay.value()->for_each_event(0, log->total_events(), [](const ReplayedEvent<T>&) { return true; });
-  if (!s) return out = s.error().message, 1;
-  o << " replay_wall=" << seconds_since(t0) << " replay_events=" << replay.value()->events_applied();
-  out = o.str();
-  return 0;
-}
-
-int seek_child(const std::string& path, std::string& out) {
-  const auto t0 = std::chrono::steady_clock::now();
-  auto log = LogReader::open(path);
-  if (!log) return out = log.error().message, 1;
-  const double open_seconds = seconds_since(t0);
-  std::shared_ptr<const LogReader> reader = log.value();
-  return tools::with_scalar(reader->header().scalar,
-                            [&]<class T>() { return seek_child_typed<T>(reader, open_seconds, out); });
-}
-
-SeekResult measure_seeks(const std::string& path) {
-  const ChildMeasurement r = run_child_measurement([&](std::string& out) { return seek_child(path, out); });
-  SeekResult m;
-  m.ok = r.ok;
-  m.failure = r.failure;
-  if (!r.ok) return m;
-  const KeyValues& kv = r.values;
-  m.open = get(kv, "open");
-  m.replay_wall = get(kv, "replay_wall");
-  m.replay_events = get(kv, "replay_events");
-  for (int k = 0; k < kSeekTimes; ++k) {
-    m.create.push_back(get(kv, "create_" + std::to_string(k)));
-    m.seek.push_back(get(kv, "seek_" + std::to_string(k)));
-  }
-  return m;
-}
-
-struct SeekRow {
-  std::string label;
-  std::uint64_t interval = 0;
-  bool rebuilds = false;  // automatic engine rebuilds (resumable keyframes) left on
-  RunResult build;
-  LogShape shape;
-  std::vector<SeekResult> repeats;
-  std::string failure;
-};
-
-// Per seek time the median over repeats; then min, median, max over the times.
-void seek_stats(const SeekRow& row, double& lo, double& mid, double& hi, double& create, double& replay_eps) {
-  std::vector<double> per_time, creates, eps;
-  for (int k = 0; k < kSeekTimes; ++k) {
-    std::vector<double> v, c;
-    for (const SeekResult& r : row.repeats) v.push_back(r.seek[std::size_t(k)]), c.push_back(r.create[std::size_t(k)]);
-    per_time.push_back(median(v));
-    creates.push_back(median(c));
-  }
-  for (const SeekResult& r : row.repeats) eps.push_back(r.replay_wall > 0 ? r.replay_events / r.replay_wall : 0);
-  lo = *std::min_element(per_time.begin(), per_time.end());
-  hi = *std::max_element(per_time.begin(), per_time.end());
-  mid = median(per_time);
-  create = median(creates);
-  replay_eps = median(eps);
-}
-
 SeekRow seek_row(const LogBenchOptions& o, std::uint64_t interval, bool rebuilds) {
-  SeekRow row;
-  row.interval = interval;
-  row.rebuilds = rebuilds;
-  row.label = power_of_two(interval) + (rebuilds ? " (automatic rebuilds)" : "");
   LogSettings settings;
   settings.keyframe_interval = interval;
   RunConfig c = config("seek-" + power_of_two(interval) + (rebuilds ? "-rebuilds" : ""), o.reference, o.seek_events,
                        true, settings, o.out_dir);
   if (!rebuilds) c.overrides.push_back(kNoRebuilds);
-  std::fprintf(stderr, "  building %s\n", c.log_path.c_str());
-  row.build = run_measured(c);
-  if (!row.build.ok) return row.failure = row.build.failure, row;
-  row.shape = read_shape(c.log_path, 0);
-  if (!row.shape.ok) {
-    std::filesystem::remove(c.log_path);
-    return row.failure = row.shape.failure, row;
-  }
-  for (int k = 0; k < o.repeat && row.failure.empty(); ++k) {
-    SeekResult r = measure_seeks(c.log_path);
-    if (!r.ok) row.failure = r.failure;
-    else row.repeats.push_back(std::move(r));
-    std::fprintf(stderr, "  %s seeks, run %d\n", row.label.c_str(), k + 1);
-  }
-  std::filesystem::remove(c.log_path);
-  return row;
+  return seek_row(c, power_of_two(interval) + (rebuilds ? " (automatic rebuilds)" : ""), interval, rebuilds, o.repeat);
 }
 
 void print_seek(const std::vector<SeekRow>& rows, const Series& sim, const std::string& csv_prefix) {
@@ -568,20 +296,20 @@ void print_seek(const std::vector<SeekRow>& rows, const Series& sim, const std::
       std::printf("| %s | failed: %s |\n", r.label.c_str(), r.failure.c_str());
       continue;
     }
-    double lo, mid, hi, create, replay_eps;
-    seek_stats(r, lo, mid, hi, create, replay_eps);
+    const SeekStats st = seek_stats(r);
     const double sim_logged_eps = r.build.logged / r.build.wall;
     std::printf("| %s | %.0f (%.0f) | %.4g | %s | %s | %s | %s | %s | %s | %s | %s | %s | %sx |\n", r.label.c_str(),
                 r.shape.keyframes, r.shape.resumable_keyframes, r.shape.events, mib(r.shape.file_bytes).c_str(),
                 fmt(r.shape.file_bytes / r.shape.events).c_str(),
                 share(r.shape.keyframe_payload, r.shape.keyframe_payload + r.shape.chunk_payload).c_str(),
-                fmt(1e3 * lo).c_str(), fmt(1e3 * mid).c_str(), fmt(1e3 * hi).c_str(), fmt(1e3 * create).c_str(),
-                fmt(replay_eps / 1e6).c_str(), fmt(sim_logged_eps / 1e6).c_str(),
-                fmt(replay_eps / sim_logged_eps).c_str());
+                fmt(1e3 * st.min).c_str(), fmt(1e3 * st.median).c_str(), fmt(1e3 * st.max).c_str(),
+                fmt(1e3 * st.create).c_str(), fmt(st.replay_events_per_second / 1e6).c_str(),
+                fmt(sim_logged_eps / 1e6).c_str(), fmt(st.replay_events_per_second / sim_logged_eps).c_str());
     if (csv)
       std::fprintf(csv, "%llu,%d,%.0f,%.0f,%.0f,%.0f,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n", (unsigned long long)r.interval,
                    r.rebuilds ? 1 : 0, r.shape.keyframes, r.shape.resumable_keyframes, r.shape.events,
-                   r.shape.file_bytes, lo, mid, hi, create, replay_eps, sim_logged_eps);
+                   r.shape.file_bytes, st.min, st.median, st.max, st.create, st.replay_events_per_second,
+                   sim_logged_eps);
   }
   if (csv) std::fclose(csv);
   std::printf("\nSeek: Replay::seek_time at t_end (k + 0.37) / %d, k = 0..%d, each on a freshly created Replay "
@@ -596,8 +324,7 @@ void print_seek(const std::vector<SeekRow>& rows, const Series& sim, const std::
               "median of the repeats); simulation: the run that wrote the log.\n\n");
   const SeekRow* defaults = rows.empty() || !rows.back().failure.empty() ? nullptr : &rows.back();
   if (sim.ok() && defaults) {
-    double lo, mid, hi, create, replay_eps;
-    seek_stats(*defaults, lo, mid, hi, create, replay_eps);
+    const double replay_eps = seek_stats(*defaults).replay_events_per_second;
     const double logged_eps = defaults->shape.events / sim.wall();
     std::printf("The same run as the last row without a log (median of %zu): %.3g s, %.3g M engine events/s, "
                 "%.3g M logged events/s; replay applies events %.3gx as fast.\n\n",

@@ -1,0 +1,98 @@
+// What the log benchmark (bench_log) and the accuracy study (accuracy_log, accuracy_engine) both measure
+// about the event log: one run with or without a log, timed in a child process; what a written log is
+// made of (sizes, keyframes); and seeking in it (state at arbitrary times from fresh Replays).
+// Only the event loop is timed, never setup; the writer's final flush is inside the loop's last call, so
+// draining its queue counts. Rejected: timing `ede-sim -o` from outside (progress, summary and setup get
+// mixed in, and the compressing thread's CPU time is not separable from the event loop's).
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "ede/engine.hpp"
+#include "ede/log_column_sizes.hpp"
+#include "ede/log_writer.hpp"
+
+namespace ede::bench {
+
+constexpr int kSeekTimes = 20;
+// engine.rebuild_interval = 2^40: only the rebuild at start, so that keyframe_interval alone places keyframes.
+constexpr const char* kNoRebuilds = "engine.rebuild_interval=1099511627776";
+
+std::string power_of_two(std::uint64_t v);  // "2^20", or the number when v is not a power of two
+double seconds_since(std::chrono::steady_clock::time_point t0);
+
+struct CpuTimes {
+  double process = 0, thread = 0;  // user + system seconds: all threads, the calling thread
+};
+CpuTimes cpu_times();  // getrusage: RUSAGE_SELF and RUSAGE_THREAD
+
+// One run of a scene file, with or without a log.
+struct RunConfig {
+  std::string label;
+  std::string scene;
+  std::uint64_t events = 0;            // stop.events override (0: the scene's)
+  std::vector<std::string> overrides;  // more scene overrides
+  ContactRoot contact = ContactRoot::Stable;
+  bool log = false;
+  LogSettings settings;
+  std::string log_path;
+};
+
+struct RunResult {
+  bool ok = false;
+  std::string failure;
+  double disks = 0, events = 0, collisions = 0, logged = 0, bytes = 0, sim_time = 0;
+  double wall = 0, cycles = 0, cpu_process = 0, cpu_main = 0;
+  double cpu_worker() const { return cpu_process - cpu_main > 0 ? cpu_process - cpu_main : 0; }
+};
+
+// The run in a child process; the log (if any) stays at c.log_path for the caller to read and delete.
+RunResult run_measured(const RunConfig& c);
+
+struct LogShape {
+  bool ok = false;
+  std::string failure;
+  double file_bytes = 0, events = 0, chunks = 0, chunk_payload = 0;
+  double keyframes = 0, resumable_keyframes = 0, keyframe_payload = 0;
+  LogColumnSizes columns;  // filled when asked for
+};
+
+// Sizes of a complete log; with columns_level > 0 also each column compressed alone at that level.
+LogShape read_shape(const std::string& path, int columns_level);
+
+struct SeekResult {
+  bool ok = false;
+  std::string failure;
+  double open = 0, replay_wall = 0, replay_events = 0;
+  std::vector<double> create, seek;  // per seek time
+};
+
+// Replay::seek_time at t_end (k + 0.37) / kSeekTimes, each on a fresh Replay, and one replay of every
+// event from the start; in a child process.
+SeekResult measure_seeks(const std::string& path);
+
+// A log built once (timed) and sought in `repeat` times.
+struct SeekRow {
+  std::string label;
+  std::uint64_t interval = 0;
+  bool rebuilds = false;  // automatic engine rebuilds (resumable keyframes) left on
+  RunResult build;
+  LogShape shape;
+  std::vector<SeekResult> repeats;
+  std::string failure;
+};
+
+// Builds the log `build` describes, reads its shape, seeks in it `repeat` times, deletes it.
+SeekRow seek_row(const RunConfig& build, const std::string& label, std::uint64_t interval, bool rebuilds, int repeat);
+
+struct SeekStats {
+  double min = 0, median = 0, max = 0;  // seconds, over the seek times (each the median over repeats)
+  double create = 0;                    // a fresh Replay, median
+  double replay_events_per_second = 0;  // median over repeats
+};
+SeekStats seek_stats(const SeekRow& row);
+
+}  // namespace ede::bench
