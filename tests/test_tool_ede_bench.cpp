@@ -1,6 +1,10 @@
 // ede-bench's command line as a user meets it: --help, and status 2 with CLI11's message for a bad one. The
-// benchmarks themselves are not run here: they take minutes and measure the machine, not ede's results.
+// benchmarks themselves are not run here: they take minutes and measure the machine, not ede's results;
+// the exceptions are small versions of the ones that check results (stress, accuracy --quick).
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <filesystem>
+#include <map>
 #include <string>
 
 #include "tool_runner.hpp"
@@ -31,4 +35,107 @@ TEST_CASE("ede-bench stress: packing 0.8 and restitution 0.5 with TC keep every 
   std::size_t exact = 0;
   for (std::size_t at = r.out.find("bit-exact"); at != std::string::npos; at = r.out.find("bit-exact", at + 1)) ++exact;
   CHECK(exact == 2);
+}
+
+namespace {
+
+// A CSV file as rows of column name -> field (no quoted fields in ede-bench accuracy's tables).
+std::vector<std::map<std::string, std::string>> read_csv_rows(const std::string& path) {
+  const std::vector<std::string> all = lines(read_file(path));
+  std::vector<std::map<std::string, std::string>> rows;
+  if (all.empty()) return rows;
+  const std::vector<std::string> names = csv_fields(all[0]);
+  for (std::size_t k = 1; k < all.size(); ++k) {
+    const std::vector<std::string> fields = csv_fields(all[k]);
+    std::map<std::string, std::string> row;
+    for (std::size_t c = 0; c < names.size() && c < fields.size(); ++c) row[names[c]] = fields[c];
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+double number(const std::map<std::string, std::string>& row, const std::string& column) {
+  REQUIRE(row.count(column));
+  INFO(column << " = '" << row.at(column) << "'");
+  char* end = nullptr;
+  const double v = std::strtod(row.at(column).c_str(), &end);
+  REQUIRE(end != row.at(column).c_str());
+  REQUIRE(std::isfinite(v));
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("ede-bench accuracy --quick: a row per setting, finite errors ordered as physics says", "[tool][ede-bench][accuracy]") {
+  const std::string out = temp_path("accuracy");
+  const ToolRun r = run_tool("ede-bench", "accuracy --quick --no-plot --out " + out + " --scenes " +
+                                              source_path("examples/accuracy") + " --tmp-dir " + out + "-tmp",
+                             "accuracy", 300);
+  INFO(r.out << r.err);
+  REQUIRE(r.status == 0);
+  const auto engine = read_csv_rows(out + "/engine.csv");
+  // (scene, precision, contact) -> row; every setting on every scene, every error finite.
+  std::map<std::string, std::map<std::string, std::string>> by;
+  for (const auto& row : engine) {
+    INFO(row.at("scene") << " " << row.at("precision") << " " << row.at("contact"));
+    CHECK(row.at("failure") == "\"\"");
+    CHECK(number(row, "ns_per_event") > 0);
+    CHECK(number(row, "repeats_agree") == 1);
+    for (const char* c : {"energy_drift", "energy_drift_max", "largest_overlap", "reversal_rms_c5", "reversal_rms_c10",
+                          "reversal_rms_c20", "reversal_returned_c20", "divergence_path_collisions"})
+      number(row, c);
+    by[row.at("scene") + "/" + row.at("precision") + "/" + row.at("contact")] = row;
+  }
+  const std::vector<std::string> precisions = {"float", "double", "long_double"};
+  for (const std::string scene : {"gas", "dense", "crystal"})
+    for (const std::string& p : precisions)
+      for (const std::string contact : {"stable", "textbook"}) CHECK(by.count(scene + "/" + p + "/" + contact) == 1);
+  REQUIRE(engine.size() >= 18);
+  for (const std::string scene : {"gas", "dense", "crystal"}) {
+    INFO(scene);
+    const auto& f = by[scene + "/float/stable"];
+    const auto& d = by[scene + "/double/stable"];
+    const auto& l = by[scene + "/long_double/stable"];
+    // Round-off: each step in precision leaves less drift, and float's overlaps are far above double's.
+    CHECK(number(f, "energy_drift_max") > 100 * number(d, "energy_drift_max"));
+    CHECK(number(d, "energy_drift_max") > number(l, "energy_drift_max"));
+    CHECK(number(f, "largest_overlap") > 100 * number(d, "largest_overlap"));
+    CHECK(number(d, "largest_overlap") < 1e-13);
+    // Time reversal comes back worse after more collisions and in a narrower type.
+    CHECK(number(f, "reversal_rms_c20") > number(d, "reversal_rms_c20"));
+    CHECK(number(d, "reversal_rms_c20") > number(l, "reversal_rms_c20"));
+    // The log stores the run's own type: bytes grow with it.
+    CHECK(number(f, "log_bytes_per_event") < number(d, "log_bytes_per_event"));
+    CHECK(number(d, "log_bytes_per_event") < number(l, "log_bytes_per_event"));
+  }
+  const auto& gf = by["gas/float/stable"];
+  const auto& gd = by["gas/double/stable"];
+  CHECK(number(gf, "reversal_rms_c5") < number(gf, "reversal_rms_c20"));
+  // In the gas, runs one float ulp apart part after fewer collisions than runs one double ulp apart.
+  CHECK(number(gf, "divergence_path_collisions") > 0);
+  const double dd = number(gd, "divergence_path_collisions");
+  CHECK((dd < 0 || dd > number(gf, "divergence_path_collisions")));
+
+  const auto log = read_csv_rows(out + "/log.csv");
+  REQUIRE(log.size() == 4);  // off, two keyframe intervals, defaults
+  CHECK(number(log[1], "bytes_per_event") > number(log[2], "bytes_per_event"));  // denser keyframes: bigger
+  CHECK(number(log[1], "seek_median_seconds") < number(log[3], "seek_median_seconds"));
+
+  const auto stepped = read_csv_rows(out + "/time_stepped.csv");
+#if EDE_HAVE_TIME_STEPPED
+  REQUIRE(stepped.size() == 4);  // event-driven, dt = 1, 0.3, 0.1 tau
+  CHECK(stepped[0].at("method") == "event-driven");
+  for (std::size_t k = 2; k < stepped.size(); ++k) {
+    CHECK(number(stepped[k], "rate_error") < number(stepped[k - 1], "rate_error"));
+    CHECK(number(stepped[k], "cooling_error") < number(stepped[k - 1], "cooling_error"));
+  }
+  CHECK(number(stepped[1], "largest_overlap") > 0.01);  // dt = tau: disks run deep into each other
+#else
+  CHECK(stepped.empty());
+  CHECK(r.out.find("Not built") != std::string::npos);
+#endif
+  const std::string md = read_file(out + "/tables.md");
+  CHECK(md.find("| long double, textbook root |") != std::string::npos);
+  CHECK(md.find("### The log") != std::string::npos);
+  std::filesystem::remove_all(out);
 }

@@ -2,8 +2,10 @@
 //   speed  events per second, ns and cycles per event, bytes per disk, against the all-pairs baseline.
 //   log    event log: bytes per event, zstd level, logging overhead, seek time and replay throughput.
 //   stress the hard cases run long (packing 0.8; restitution 0.5 with TC), every invariant checked.
+//   accuracy  what accuracy costs in time: ns per event against the errors each setting leaves.
 #include <CLI/CLI.hpp>
 
+#include "accuracy.hpp"
 #include "bench_log.hpp"
 #include "bench_speed.hpp"
 #include "bench_stress.hpp"
@@ -46,7 +48,28 @@ int main(int argc, char** argv) {
   st->add_option("--out-dir", stress.out_dir, "where the logs go (default /tmp)");
   st->add_flag("--keep-logs", stress.keep_logs, "keep the logs");
 
+  ede::bench::AccuracyOptions accuracy;
+  bool no_plot = false;
+  CLI::App* a = app.add_subcommand("accuracy", "ns per event against the errors each accuracy setting leaves");
+  a->add_option("--out", accuracy.out_dir, "folder for the CSV tables, tables.md and accuracy.png");
+  a->add_option("--scenes", accuracy.scenes_dir, "folder of the study's scenes (examples/accuracy)");
+  CLI::Option* a_events = a->add_option("--events", accuracy.events, "engine events per timed run (default 10^7)")
+                              ->check(CLI::Range(std::uint64_t(1000), std::uint64_t(1) << 40));
+  CLI::Option* a_repeat = a->add_option("--repeat", accuracy.repeat, "timed runs per measurement; medians are reported")
+                              ->check(CLI::Range(1, 100));
+  a->add_option("--tmp-dir", accuracy.tmp_dir, "where the temporary logs go (deleted as soon as read)");
+  a->add_flag("--quick", accuracy.quick, "a smoke run (well under a minute): 2e5 events, 1 repeat, shorter lists");
+  a->add_flag("--no-plot", no_plot, "write the tables only");
+
   if (const auto stop = ede::tools::parse_command_line(app, argc, argv)) return *stop;
+  if (*a) {
+    if (accuracy.quick) {
+      if (!a_repeat->count()) accuracy.repeat = 1;
+      if (!a_events->count()) accuracy.events = 200000;
+    }
+    accuracy.plot = !no_plot;
+    return ede::bench::run_accuracy(accuracy);
+  }
   if (*st) return ede::bench::run_stress(stress);
   if (*s) return ede::bench::run_speed(speed);
   if (*l) {

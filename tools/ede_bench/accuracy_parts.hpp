@@ -1,0 +1,105 @@
+// The parts of ede-bench accuracy and the rows they produce; accuracy.cpp runs them, accuracy_report.cpp
+// prints them. Each part measures in child processes (run_child_measurement), one file per part:
+//   accuracy_engine.cpp        per setting and scene: ns/event, energy drift, largest overlap, log bytes/event
+//   accuracy_chaos.cpp         per setting and scene: time reversal, divergence of runs one ulp apart
+//   accuracy_time_stepped.cpp  a time-stepped simulation at several dt against the event-driven engine
+//   accuracy_log.cpp           the log off, on, and its keyframe interval: time, bytes, seek time
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "accuracy_settings.hpp"
+
+namespace ede::bench {
+
+// What the whole study runs; accuracy.cpp fills it from the command line (full or --quick).
+struct StudyPlan {
+  std::string scenes_dir;                // examples/accuracy
+  std::uint64_t events = 10000000;       // engine events of the drift, overlap and timing runs
+  int repeat = 3;                        // timed runs per measurement; medians are reported
+  int checkpoints = 100;                 // energy and overlap checks along each timed run
+  std::vector<double> reversal_collisions = {5, 10, 20};  // collisions per disk before reversing
+  double divergence_cap = 200;           // collisions per disk after which twin runs are given up
+  double divergence_step = 0.1;          // collisions per disk between the twins' comparisons
+  double ts_collisions = 20;             // collisions per disk of the time-stepped comparisons
+  std::vector<double> ts_dt_fractions = {1, 0.3, 0.1, 0.03, 0.01};  // dt in mean free times
+  int cooling_points = 20;               // times at which the cooling curves are compared
+  std::vector<std::uint64_t> keyframe_intervals = {1u << 14, 1u << 16, 1u << 18, 1u << 20, 1u << 22};
+  std::uint64_t log_events = 10000000;   // engine events of the keyframe-interval logs
+  std::string tmp_dir;                   // where the logs go (deleted as soon as read)
+
+  std::string scene(const std::string& name) const { return scenes_dir + "/" + name + ".toml"; }
+};
+
+// The scenes of the engine measurements (examples/accuracy/NAME.toml).
+const std::vector<std::string>& engine_scenes();
+
+// ------------------------------------------------------------------------------- accuracy_engine.cpp
+
+struct EngineRow {
+  Setting setting;
+  std::string scene;
+  std::string failure;
+  double disks = 0, events = 0, collisions = 0;
+  double ns_per_event = 0;                 // median over repeats of the event loop's wall time / events
+  double drift = 0, drift_max = 0;         // |E - E0| / E0 at the end, largest at the checkpoints
+  double overlap = 0;                      // largest at the checkpoints, fraction of the contact distance
+  bool repeats_agree = true;               // drift and overlap identical over the repeats (determinism)
+  double log_bytes_per_event = -1;         // -1: no log for this type
+  // accuracy_chaos.cpp
+  std::vector<double> reversal_rms;        // per StudyPlan::reversal_collisions, in diameters
+  std::vector<double> reversal_returned;   // fraction of disks back within a diameter
+  // Collisions per disk until some disk is a mean free path (free_path), or a diameter, from its twin one
+  // ulp apart; -1: not within divergence_cap.
+  double free_path = 0, divergence_path = -1, divergence_diameter = -1;
+};
+
+// ns/event, drift and overlap; then one run with the log on (bytes per event), for each setting and scene.
+void measure_engine(const StudyPlan& plan, EngineRow& row);
+
+// --------------------------------------------------------------------------------- accuracy_chaos.cpp
+
+void measure_chaos(const StudyPlan& plan, EngineRow& row);
+
+// ------------------------------------------------------------------------- accuracy_time_stepped.cpp
+
+struct SteppedRow {
+  std::string method;        // "event-driven" or "time-stepped"
+  double dt_over_tau = 0;    // time-stepped: dt in mean free times
+  double dt = 0;
+  double cpu_seconds = 0;    // median over repeats, the run to the same time
+  double pair_collisions = 0;
+  double rate_error = 0;     // |rate / event-driven rate - 1|, elastic gas
+  double cooling_error = 0;  // max over the comparison times of |E / E_event-driven - 1|, inelastic gas
+  double cooling_cpu_seconds = 0;
+  double overlap = 0;        // largest overlap seen (elastic gas), fraction of the contact distance
+  std::string failure;
+};
+
+struct SteppedStudy {
+  bool built = false;        // false: this build has no time-stepped implementation
+  double tau = 0;            // mean free time of the elastic gas (time per collision per disk)
+  double span = 0, cooling_span = 0;
+  double rate = 0, rate_stderr = 0;  // event-driven pair collisions per disk per time, and its block error
+  double energy_end = 0;             // event-driven E/E0 at the end of the cooling run
+  std::vector<SteppedRow> rows;
+};
+
+SteppedStudy measure_time_stepped(const StudyPlan& plan);
+
+// ------------------------------------------------------------------------------------ accuracy_log.cpp
+
+struct LogRow {
+  std::string label;
+  std::uint64_t interval = 0;  // 0: log off
+  bool rebuilds = false;
+  double ns_per_event = 0, ratio_to_off = 0, bytes_per_event = 0, keyframe_share = 0;
+  double seek_median = 0, seek_max = 0;  // seconds
+  std::string failure;
+};
+
+std::vector<LogRow> measure_log(const StudyPlan& plan);
+
+}  // namespace ede::bench

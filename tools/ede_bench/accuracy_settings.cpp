@@ -1,0 +1,59 @@
+// The accuracy study's settings and scene loading; see accuracy_settings.hpp.
+#include "accuracy_settings.hpp"
+
+#include "ede/scene_loader.hpp"
+#include "ede/setup.hpp"
+
+namespace ede::bench {
+
+const char* precision_name(Precision p) {
+  switch (p) {
+    case Precision::Float: return "float";
+    case Precision::Double: return "double";
+    case Precision::LongDouble: return "long double";
+    case Precision::Float128: return "__float128";
+  }
+  return "?";
+}
+
+bool precision_built(Precision p) {
+#if EDE_HAVE_FLOAT128
+  (void)p;
+  return true;
+#else
+  return p != Precision::Float128;
+#endif
+}
+
+bool has_log(Precision p) { return p != Precision::Float128; }
+
+std::string Setting::label() const {
+  return std::string(precision_name(precision)) + (contact == ContactRoot::Textbook ? ", textbook root" : "");
+}
+
+std::vector<Setting> study_settings() {
+  std::vector<Setting> all;
+  for (const ContactRoot c : {ContactRoot::Stable, ContactRoot::Textbook})
+    for (const Precision p : {Precision::Float, Precision::Double, Precision::LongDouble, Precision::Float128})
+      if (precision_built(p)) all.push_back({p, c});
+  return all;
+}
+
+std::string scalar_override(Precision p) {
+  return p == Precision::Float ? "engine.scalar=float"
+         : p == Precision::LongDouble ? "engine.scalar=\"long double\""
+                                      : "engine.scalar=double";
+}
+
+Result<StudyScene> load_study_scene(const std::string& path, const Setting& setting) {
+  auto scene = load_scene_file(path, {Override{scalar_override(setting.precision)}});
+  if (!scene) return scene.error();
+  auto initial = build_initial_state(scene.value());
+  if (!initial) return initial.error();
+  StudyScene s{std::move(scene).value(), std::move(initial).value(), {}};
+  s.options = engine_options_from(s.scene, s.initial.size());
+  s.options.contact = setting.contact;
+  return s;
+}
+
+}  // namespace ede::bench
