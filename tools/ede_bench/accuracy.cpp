@@ -27,6 +27,7 @@ StudyPlan make_plan(const AccuracyOptions& o) {
     p.checkpoints = 20;
     p.divergence_cap = 40;
     p.ts_collisions = 10;
+    p.cooling_collisions = 10;
     p.ts_dt_fractions = {1, 0.3, 0.1};
     p.cooling_points = 10;
     p.keyframe_intervals = {1u << 12, 1u << 14};

@@ -23,7 +23,8 @@ struct StudyPlan {
   std::vector<double> reversal_collisions = {5, 10, 20};  // collisions per disk before reversing
   double divergence_cap = 200;           // collisions per disk after which twin runs are given up
   double divergence_step = 0.1;          // collisions per disk between the twins' comparisons
-  double ts_collisions = 20;             // collisions per disk of the time-stepped comparisons
+  double ts_collisions = 100;            // mean free times of the collision-rate comparison
+  double cooling_collisions = 20;        // initial mean free times of the cooling-curve comparison
   std::vector<double> ts_dt_fractions = {1, 0.3, 0.1, 0.03, 0.01};  // dt in mean free times
   int cooling_points = 20;               // times at which the cooling curves are compared
   std::vector<std::uint64_t> keyframe_intervals = {1u << 14, 1u << 16, 1u << 18, 1u << 20, 1u << 22};

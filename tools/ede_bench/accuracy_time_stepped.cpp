@@ -4,8 +4,8 @@
 //   elastic gas (accuracy/gas): the pair collision rate over ts_collisions mean free times, error
 //     |rate / event-driven rate - 1|, and the largest overlap. Energy is no test here: the time-stepped
 //     method conserves it by construction (impulses).
-//   inelastic gas (accuracy/cooling, xi = 0.9): the cooling curve E(t)/E0 at cooling_points times,
-//     error max_k |E_ts(t_k) / E_ed(t_k) - 1|.
+//   inelastic gas (accuracy/cooling, xi = 0.9): the cooling curve E(t)/E0 at cooling_points times over
+//     cooling_collisions initial mean free times, error max_k |E_ts(t_k) / E_ed(t_k) - 1|.
 // dt is given in mean free times tau (time per collision per disk, from a probe run of each gas). Times are
 // CPU seconds of the run's thread (getrusage), medians over repeats, each run in its own child. The
 // event-driven rate's own noise is shown by 10 blocks of its run (standard error of the block rates).
@@ -168,7 +168,7 @@ SteppedStudy measure_time_stepped(const StudyPlan& plan) {
   }
   st.tau = tau.value();
   st.span = plan.ts_collisions * st.tau;
-  st.cooling_span = plan.ts_collisions * tau_cool.value();
+  st.cooling_span = plan.cooling_collisions * tau_cool.value();
   const int points = plan.cooling_points;
   std::fprintf(stderr, "  time-stepped: tau %.4g, span %.4g; cooling span %.4g\n", st.tau, st.span, st.cooling_span);
 
