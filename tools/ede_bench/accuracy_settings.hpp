@@ -87,16 +87,21 @@ struct Wide<__float128> {
 };
 #endif
 
-// Kinetic energy from the records' velocities (no gravity in the study's scenes), in Wide<T>.
+// Kinetic energy from the records' velocities (no gravity in the study's scenes), in Wide<T> with
+// compensated (Neumaier) summation: a plain sum of N terms in long double is only good to ~sqrt(N) eps,
+// about the drift of a whole long double run, which it would hide.
 template <class T>
 typename Wide<T>::type kinetic_energy_wide(const Particles<T>& p) {
   using W = typename Wide<T>::type;
-  W e = 0;
+  W sum = 0, lost = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const W vx = W(p.disk[i].vx), vy = W(p.disk[i].vy);
-    e += W(p.mass[i]) * (vx * vx + vy * vy);
+    const W term = W(p.mass[i]) * (vx * vx + vy * vy);
+    const W next = sum + term;
+    lost += (sum > term ? sum - next + term : term - next + sum);  // sum >= 0, term >= 0: no abs needed
+    sum = next;
   }
-  return e / 2;
+  return (sum + lost) / 2;
 }
 
 // |E - E0| / E0 as a double (the difference is taken in the wide type).

@@ -25,6 +25,7 @@
 namespace ede::bench {
 
 std::string power_of_two(std::uint64_t v) {
+  if (v == 0) return "auto";  // LogSettings: 0 is the automatic keyframe interval
   int k = 0;
   while ((std::uint64_t(1) << k) < v) ++k;
   return (std::uint64_t(1) << k) == v ? "2^" + std::to_string(k) : std::to_string(v);

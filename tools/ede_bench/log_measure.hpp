@@ -21,7 +21,8 @@ constexpr int kSeekTimes = 20;
 // engine.rebuild_interval = 2^40: only the rebuild at start, so that keyframe_interval alone places keyframes.
 constexpr const char* kNoRebuilds = "engine.rebuild_interval=1099511627776";
 
-std::string power_of_two(std::uint64_t v);  // "2^20", or the number when v is not a power of two
+// "2^20", or the number when v is not a power of two; "auto" for 0 (LogSettings' automatic interval).
+std::string power_of_two(std::uint64_t v);
 double seconds_since(std::chrono::steady_clock::time_point t0);
 
 struct CpuTimes {
