@@ -58,13 +58,26 @@ class TimeStepped {
  private:
   TimeStepped() = default;
   void step(double dt);
+  void move(double dt);
+  void resolve_walls();
+  void wrap_all();
+  void build_cells();
+  void resolve_pairs();
+  void resolve_cell_against(std::int32_t i, std::int32_t cell);
+  void resolve_pair(std::int32_t i, std::int32_t j);
+  std::int32_t cell_of(double px, double py) const;
 
   TimeSteppedOptions options_;
   double lx_ = 1, ly_ = 1, time_ = 0, largest_overlap_ = 0;
+  // time_ = anchor_time_ + whole_steps_ * dt: whole steps are counted, not summed, so run_until(1) with
+  // dt = 1e-3 takes 1000 steps and no sliver step made of the sum's round-off.
+  double anchor_time_ = 0;
+  std::uint64_t whole_steps_ = 0;
   std::vector<double> x_, y_, vx_, vy_, r_, m_;
   TimeSteppedCounts counts_;
   // Cell list, rebuilt every step: cell sizes at least one largest diameter.
   std::int32_t nx_ = 1, ny_ = 1;
+  double cell_wx_ = 1, cell_wy_ = 1;
   std::vector<std::int32_t> cell_head_, next_in_cell_;
 };
 
