@@ -55,10 +55,11 @@ bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
 }  // namespace
 
 TEST_CASE("time-stepped: a head-on wall hit reflects v to -xi v, the overshoot mirrored", "[time_stepped]") {
-  // Contact with the wall x = 1 at t = 0.4; at t = 0.5 the event-driven answer is x = 0.9 - 0.1 xi.
+  // Contact with the wall x = 1 at t = 0.3996, between steps; at t = 0.5 the event-driven answer is
+  // x = 0.9 - 0.1004 xi (clamping to contact instead would give 0.9 - 0.1 xi).
   for (const double xi : {1.0, 0.5, 0.0}) {
     InitialState s = box();
-    s.add(0.5, 0.5, 1.0, 0.0, 0.1, 1.0, 0);
+    s.add(0.5004, 0.5, 1.0, 0.0, 0.1, 1.0, 0);
     TimeStepped t = stepped(s, 1e-3, BoundaryKind::Walls, 1.0, xi);
     t.run_until(0.5);
     CHECK(t.counts().steps == 500);
@@ -66,21 +67,21 @@ TEST_CASE("time-stepped: a head-on wall hit reflects v to -xi v, the overshoot m
     CHECK(t.counts().wall_collisions == 1);
     CHECK(t.vx()[0] == -xi);  // exact: the engine's rule
     CHECK(t.vy()[0] == 0.0);
-    CHECK(t.x()[0] == Approx(0.9 - 0.1 * xi).margin(1e-12));
+    CHECK(t.x()[0] == Approx(0.9 - 0.1004 * xi).margin(1e-12));
     CHECK(t.y()[0] == 0.5);
   }
 }
 
 TEST_CASE("time-stepped: a disk into a corner bounces off both walls", "[time_stepped]") {
   InitialState s = box();
-  s.add(0.5, 0.5, 1.0, 1.0, 0.1, 1.0, 0);
+  s.add(0.5004, 0.5004, 1.0, 1.0, 0.1, 1.0, 0);
   TimeStepped t = stepped(s, 1e-3);
   t.run_until(0.6);
   CHECK(t.counts().wall_collisions == 2);
   CHECK(t.vx()[0] == -1.0);
   CHECK(t.vy()[0] == -1.0);
-  CHECK(t.x()[0] == Approx(0.7).margin(1e-12));
-  CHECK(t.y()[0] == Approx(0.7).margin(1e-12));
+  CHECK(t.x()[0] == Approx(0.6996).margin(1e-12));
+  CHECK(t.y()[0] == Approx(0.6996).margin(1e-12));
 }
 
 TEST_CASE("time-stepped: equal disks head-on exchange velocities exactly, late by at most one step",
@@ -164,12 +165,18 @@ TEST_CASE("time-stepped: periodic positions stay in [0, L), momentum is kept", "
     px0 += s.vx[i];
     py0 += s.vy[i];
   }
-  t.run_until(1.0);
+  std::size_t outside = 0;  // after any step, pushes across the box's edge included
+  for (int k = 1; k <= 1000; ++k) {
+    t.run_until(k * 1e-3);
+    for (std::size_t i = 0; i < s.size(); ++i)
+      outside += !(t.x()[i] >= 0 && t.x()[i] < 1.0 && t.y()[i] >= 0 && t.y()[i] < 1.0);
+  }
+  CHECK(outside == 0);
+  CHECK(t.counts().steps == 1000);
   CHECK(t.counts().wall_collisions == 0);
   CHECK(t.counts().pair_collisions > 1000);
   double px = 0, py = 0;
   for (std::size_t i = 0; i < s.size(); ++i) {
-    CHECK((t.x()[i] >= 0 && t.x()[i] < 1.0 && t.y()[i] >= 0 && t.y()[i] < 1.0));
     px += t.vx()[i];
     py += t.vy()[i];
   }
