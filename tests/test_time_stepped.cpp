@@ -211,10 +211,11 @@ TEST_CASE("time-stepped: the collision rate converges to the event-driven engine
           "[time_stepped][rate]") {
   // 400 disks, packing 0.2, periodic, unit speeds; reference: the engine over the same time T = 5
   // (~36000 pair collisions). Steps of f sigma in length (sigma = diameter, v = 1), f = 0.4, 0.1, 0.025.
-  // Measured errors (seeds 1-3): -21%, -3%, +-0.3%; the largest overlap ~2.5 f (fast pairs).
-  // Tolerance at the smallest step: the two runs decorrelate after a few collision times, so their counts
-  // differ by chance by ~sqrt(2 / 36000) = 0.75% (Poisson estimate); 3 sigma plus the remaining
-  // systematic error (< 0.5% by the trend) is 3%.
+  // Measured (seeds 1-3): rate errors -20..-21%, -2.3..-3.5%, -0.1..-0.8%; largest overlaps ~1, 0.38-0.44,
+  // 0.10-0.12. Longer runs (T = 40) show a first-order systematic error, ~ -0.35 f (-0.9% at f = 0.025),
+  // and seed-to-seed scatter ~0.5%. Tolerance at the smallest step: the systematic 0.9% plus three times
+  // the Poisson estimate of the chance difference of two independent counts, 3 sqrt(2 / 36000) = 2.2%: 3%.
+  // The overlap: ~ the fastest approach speed (~4.5 v) times dt / sigma, so < 0.2 at f = 0.025.
   const double T = 5, sigma = 2 * gas_radius();
   const InitialState s = gas(1);
   EngineOptions o;

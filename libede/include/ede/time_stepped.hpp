@@ -41,7 +41,8 @@ class TimeStepped {
   // third of the box in a periodic box.
   static Result<TimeStepped> create(const InitialState& initial, const TimeSteppedOptions& options);
 
-  // Steps of dt while they fit before t, then one shorter step to land on t exactly.
+  // Steps of dt while they fit before t, then one shorter step to land on t exactly (nothing when
+  // t <= time() or t is not finite).
   void run_until(double t);
 
   double time() const { return time_; }
@@ -63,9 +64,7 @@ class TimeStepped {
   void wrap_all();
   void build_cells();
   void resolve_pairs();
-  void resolve_cell_against(std::int32_t i, std::int32_t cell);
-  void resolve_pair(std::int32_t i, std::int32_t j);
-  std::int32_t cell_of(double px, double py) const;
+  void resolve_overlap(std::size_t i, std::size_t j, double dx, double dy);
 
   TimeSteppedOptions options_;
   double lx_ = 1, ly_ = 1, time_ = 0, largest_overlap_ = 0;
@@ -77,8 +76,8 @@ class TimeStepped {
   TimeSteppedCounts counts_;
   // Cell list, rebuilt every step: cell sizes at least one largest diameter.
   std::int32_t nx_ = 1, ny_ = 1;
-  double cell_wx_ = 1, cell_wy_ = 1;
-  std::vector<std::int32_t> cell_head_, next_in_cell_;
+  double cell_ix_ = 1, cell_iy_ = 1;  // cells per unit length
+  std::vector<std::int32_t> cell_head_, next_in_cell_, cell_x_, cell_y_;
 };
 
 }  // namespace ede
