@@ -17,11 +17,7 @@ namespace ede::bench {
 
 namespace {
 
-std::string csv_number(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
+std::string csv_number(double v) { return fmt(v, 6); }
 
 std::string name_of(Precision p) { return p == Precision::LongDouble ? "long_double" : precision_name(p); }
 std::string contact_of(ContactRoot c) { return c == ContactRoot::Textbook ? "textbook" : "stable"; }
