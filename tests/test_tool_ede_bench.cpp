@@ -122,7 +122,6 @@ TEST_CASE("ede-bench accuracy --quick: a row per setting, finite errors ordered 
   CHECK(number(log[1], "seek_median_seconds") < number(log[3], "seek_median_seconds"));
 
   const auto stepped = read_csv_rows(out + "/time_stepped.csv");
-#if EDE_HAVE_TIME_STEPPED
   REQUIRE(stepped.size() == 4);  // event-driven, dt = 1, 0.3, 0.1 tau
   CHECK(stepped[0].at("method") == "event-driven");
   for (std::size_t k = 2; k < stepped.size(); ++k) {
@@ -130,10 +129,6 @@ TEST_CASE("ede-bench accuracy --quick: a row per setting, finite errors ordered 
     CHECK(number(stepped[k], "cooling_error") < number(stepped[k - 1], "cooling_error"));
   }
   CHECK(number(stepped[1], "largest_overlap") > 0.01);  // dt = tau: disks run deep into each other
-#else
-  CHECK(stepped.empty());
-  CHECK(r.out.find("Not built") != std::string::npos);
-#endif
   const std::string md = read_file(out + "/tables.md");
   CHECK(md.find("| long double, textbook root |") != std::string::npos);
   CHECK(md.find("### The log") != std::string::npos);

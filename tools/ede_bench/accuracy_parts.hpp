@@ -80,7 +80,6 @@ struct SteppedRow {
 };
 
 struct SteppedStudy {
-  bool built = false;        // false: this build has no time-stepped implementation
   double tau = 0;            // mean free time of the elastic gas (time per collision per disk)
   double span = 0, cooling_span = 0;
   double rate = 0, rate_stderr = 0;  // event-driven pair collisions per disk per time, and its block error

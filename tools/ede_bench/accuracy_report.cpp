@@ -122,10 +122,6 @@ void engine_tables(std::ostringstream& o, const StudyResults& res) {
 
 void stepped_table(std::ostringstream& o, const SteppedStudy& st) {
   o << "### Time-stepped against event-driven (gas: collision rate; cooling: E(t)/E0)\n\n";
-  if (!st.built) {
-    o << "Not built: this build has no time-stepped implementation (libede/src/time_stepped.cpp).\n\n";
-    return;
-  }
   o << "| method | dt / tau | CPU s (gas) | pair collisions | rate error | largest overlap | CPU s (cooling) | "
        "cooling error |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const SteppedRow& r : st.rows) {

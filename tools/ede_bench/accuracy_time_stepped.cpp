@@ -9,8 +9,7 @@
 // dt is given in mean free times tau (time per collision per disk, from a probe run of each gas). Times are
 // CPU seconds of the run's thread (getrusage), medians over repeats, each run in its own child. The
 // event-driven rate's own noise is shown by 10 blocks of its run (standard error of the block rates).
-// Built only when the library has the time-stepped implementation (EDE_HAVE_TIME_STEPPED, set by CMake
-// when libede/src/time_stepped.cpp exists). Rejected: comparing with Enskog's collision rate (its error
+// Rejected: comparing with Enskog's collision rate (its error
 // at these densities is larger than the differences we want to show).
 #include <cmath>
 #include <cstdio>
@@ -20,13 +19,9 @@
 #include "bench_common.hpp"
 #include "log_measure.hpp"
 
-#if EDE_HAVE_TIME_STEPPED
 #include "ede/time_stepped.hpp"
-#endif
 
 namespace ede::bench {
-
-#if EDE_HAVE_TIME_STEPPED
 
 namespace {
 
@@ -160,7 +155,6 @@ double cooling_error(const KeyValues& ts, const KeyValues& ed, int points) {
 
 SteppedStudy measure_time_stepped(const StudyPlan& plan) {
   SteppedStudy st;
-  st.built = true;
   const Result<double> tau = mean_free_time(plan, "gas"), tau_cool = mean_free_time(plan, "cooling");
   if (!tau || !tau_cool) {
     st.rows.push_back({"event-driven", 0, 0, 0, 0, 0, 0, 0, 0, (tau ? tau_cool : tau).error().message});
@@ -211,11 +205,5 @@ SteppedStudy measure_time_stepped(const StudyPlan& plan) {
   }
   return st;
 }
-
-#else
-
-SteppedStudy measure_time_stepped(const StudyPlan&) { return {}; }
-
-#endif
 
 }  // namespace ede::bench

@@ -87,7 +87,7 @@ def stepped_panel(ax, stepped):
     ts = [r for r in stepped if r["method"] == "time-stepped"]
     ed = [r for r in stepped if r["method"] == "event-driven"]
     if not ts or not ed:
-        ax.text(0.5, 0.5, "time-stepped baseline not built", ha="center", transform=ax.transAxes)
+        ax.text(0.5, 0.5, "no time-stepped rows", ha="center", transform=ax.transAxes)
         return
     for key, cpu, c, label in (("rate_error", "cpu_seconds", style.COLOURS[0], "collision rate (ξ = 1)"),
                                ("cooling_error", "cooling_cpu_seconds", style.COLOURS[1], "E(t)/E0 (ξ = 0.9)")):
