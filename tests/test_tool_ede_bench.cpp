@@ -122,13 +122,21 @@ TEST_CASE("ede-bench accuracy --quick: a row per setting, finite errors ordered 
   CHECK(number(log[1], "seek_median_seconds") < number(log[3], "seek_median_seconds"));
 
   const auto stepped = read_csv_rows(out + "/time_stepped.csv");
-  REQUIRE(stepped.size() == 4);  // event-driven, dt = 1, 0.3, 0.1 tau
+  REQUIRE(stepped.size() == 5);  // event-driven, other seed, dt = 1, 0.3, 0.1 tau
   CHECK(stepped[0].at("method") == "event-driven");
+  CHECK(stepped[1].at("method") == "event-driven (other seed)");
+  CHECK(number(stepped[0], "energy_drift") < 1e-13);
   for (std::size_t k = 2; k < stepped.size(); ++k) {
-    CHECK(number(stepped[k], "rate_error") < number(stepped[k - 1], "rate_error"));
-    CHECK(number(stepped[k], "cooling_error") < number(stepped[k - 1], "cooling_error"));
+    CHECK(stepped[k].at("method") == "time-stepped");
+    CHECK(number(stepped[k], "energy_drift") < 1e-12);  // elastic impulses: energy kept by construction
+    CHECK(number(stepped[k], "cpu_ratio") > 0);
+    if (k > 2) {
+      CHECK(number(stepped[k], "rate_error") < number(stepped[k - 1], "rate_error"));
+      CHECK(number(stepped[k], "cooling_error") < number(stepped[k - 1], "cooling_error"));
+      CHECK(number(stepped[k], "step_over_diameter") < number(stepped[k - 1], "step_over_diameter"));
+    }
   }
-  CHECK(number(stepped[1], "largest_overlap") > 0.01);  // dt = tau: disks run deep into each other
+  CHECK(number(stepped[2], "largest_overlap") > 0.01);  // dt = tau: disks run deep into each other
   const std::string md = read_file(out + "/tables.md");
   CHECK(md.find("| long double, textbook root |") != std::string::npos);
   CHECK(md.find("### The log") != std::string::npos);

@@ -14,7 +14,8 @@ namespace ede::bench {
 struct AccuracyOptions {
   std::string out_dir = "docs/accuracy";        // CSV, tables.md and accuracy.png
   std::string scenes_dir = "examples/accuracy";
-  std::uint64_t events = 10000000;               // engine events of the drift, overlap and timing runs
+  std::uint64_t events = 10000000;               // engine events of the drift and overlap runs
+  std::uint64_t timing_events = 2000000;         // engine events of each timed run
   int repeat = 3;
   bool quick = false;                            // a smoke run of well under a minute (tests)
   bool plot = true;

@@ -17,13 +17,14 @@ namespace ede::bench {
 // What the whole study runs; accuracy.cpp fills it from the command line (full or --quick).
 struct StudyPlan {
   std::string scenes_dir;                // examples/accuracy
-  std::uint64_t events = 10000000;       // engine events of the drift, overlap and timing runs
+  std::uint64_t events = 10000000;       // engine events of each error run (drift, overlap)
+  std::uint64_t timing_events = 2000000; // engine events of each timed run (ns/event); <= events
   int repeat = 3;                        // timed runs per measurement; medians are reported
-  int checkpoints = 100;                 // energy and overlap checks along each timed run
+  int checkpoints = 100;                 // energy and snapshot-overlap checks along each error run
   std::vector<double> reversal_collisions = {5, 10, 20};  // collisions per disk before reversing
   double divergence_cap = 200;           // collisions per disk after which twin runs are given up
   double divergence_step = 0.1;          // collisions per disk between the twins' comparisons
-  double ts_collisions = 100;            // mean free times of the collision-rate comparison
+  double ts_collisions = 300;            // mean free times of the collision-rate comparison
   double cooling_collisions = 20;        // initial mean free times of the cooling-curve comparison
   std::vector<double> ts_dt_fractions = {1, 0.3, 0.1, 0.03, 0.01};  // dt in mean free times
   int cooling_points = 20;               // times at which the cooling curves are compared
@@ -44,10 +45,13 @@ struct EngineRow {
   std::string scene;
   std::string failure;
   double disks = 0, events = 0, collisions = 0;
-  double ns_per_event = 0;                 // median over repeats of the event loop's wall time / events
+  double ns_per_event = 0;                 // median over the timed runs of the event loop's wall time / events
+  std::vector<double> ns_runs;             // each timed run's ns/event
   double drift = 0, drift_max = 0;         // |E - E0| / E0 at the end, largest at the checkpoints
-  double overlap = 0;                      // largest at the checkpoints, fraction of the contact distance
-  bool repeats_agree = true;               // drift and overlap identical over the repeats (determinism)
+  double drift_at_timing = -1;             // the error run's drift after timing_events events
+  double overlap = 0;                      // largest at a pair collision, fraction of the contact distance
+  double overlap_snapshot = 0;             // largest over all near pairs at the checkpoints
+  bool repeats_agree = true;               // the timed runs' drift equals the error run's (determinism)
   double log_bytes_per_event = -1;         // -1: no log for this type
   // accuracy_chaos.cpp
   std::vector<double> reversal_rms;        // per StudyPlan::reversal_collisions, in diameters
@@ -57,8 +61,10 @@ struct EngineRow {
   double free_path = 0, divergence_path = -1, divergence_diameter = -1;
 };
 
-// ns/event, drift and overlap; then one run with the log on (bytes per event), for each setting and scene.
-void measure_engine(const StudyPlan& plan, EngineRow& row);
+// The error run (drift, overlap), then one run with the log on (bytes per event).
+void measure_engine_errors(const StudyPlan& plan, EngineRow& row);
+// One timed run, appended to row.ns_runs (ns_per_event: their median so far).
+void measure_engine_time(const StudyPlan& plan, EngineRow& row);
 
 // --------------------------------------------------------------------------------- accuracy_chaos.cpp
 
@@ -67,20 +73,25 @@ void measure_chaos(const StudyPlan& plan, EngineRow& row);
 // ------------------------------------------------------------------------- accuracy_time_stepped.cpp
 
 struct SteppedRow {
-  std::string method;        // "event-driven" or "time-stepped"
-  double dt_over_tau = 0;    // time-stepped: dt in mean free times
+  std::string method;        // "event-driven", "event-driven (other seed)" or "time-stepped"
+  double dt_over_tau = 0;    // time-stepped: dt in mean free times (gas)
   double dt = 0;
-  double cpu_seconds = 0;    // median over repeats, the run to the same time
+  double step_over_diameter = 0;  // v_rms dt / d: how far a disk moves in one step, in diameters (gas)
+  double cpu_seconds = 0;    // median over repeats, the run to the same time (gas)
+  double cpu_ratio = 0;      // cpu_seconds / the event-driven run's
   double pair_collisions = 0;
   double rate_error = 0;     // |rate / event-driven rate - 1|, elastic gas
-  double cooling_error = 0;  // max over the comparison times of |E / E_event-driven - 1|, inelastic gas
-  double cooling_cpu_seconds = 0;
+  double energy_drift = 0;   // |E - E0| / E0 at the end, elastic gas
   double overlap = 0;        // largest overlap seen (elastic gas), fraction of the contact distance
+  double cooling_cpu_seconds = 0;
+  double cooling_cpu_ratio = 0;
+  double cooling_error = 0;  // max over the comparison times of |E / E_event-driven - 1|, inelastic gas
   std::string failure;
 };
 
 struct SteppedStudy {
-  double tau = 0;            // mean free time of the elastic gas (time per collision per disk)
+  double tau = 0, tau_cooling = 0;   // mean free times (time per collision per disk) of the two gases
+  double diameter = 0, v_rms = 0;    // of the elastic gas
   double span = 0, cooling_span = 0;
   double rate = 0, rate_stderr = 0;  // event-driven pair collisions per disk per time, and its block error
   double energy_end = 0;             // event-driven E/E0 at the end of the cooling run

@@ -37,7 +37,7 @@ std::string divergence_text(double collisions, const StudyPlan& plan) {
 std::string engine_csv(const StudyResults& res) {
   std::ostringstream o;
   o << "scene,precision,contact,disks,events,collisions,ns_per_event,ns_ratio_to_double,energy_drift,"
-       "energy_drift_max,largest_overlap,repeats_agree,log_bytes_per_event";
+       "energy_drift_max,largest_overlap,largest_overlap_snapshot,timing_events,repeats_agree,log_bytes_per_event";
   for (const double c : res.plan.reversal_collisions) o << ",reversal_rms_c" << fmt(c);
   for (const double c : res.plan.reversal_collisions) o << ",reversal_returned_c" << fmt(c);
   o << ",free_path,divergence_path_collisions,divergence_diameter_collisions,divergence_cap,failure\n";
@@ -47,7 +47,7 @@ std::string engine_csv(const StudyResults& res) {
       << contact_of(r.setting.contact) << "," << r.disks << "," << r.events << "," << r.collisions << ","
       << csv_number(r.ns_per_event) << "," << csv_number(base > 0 ? r.ns_per_event / base : 0) << ","
       << csv_number(r.drift) << "," << csv_number(r.drift_max) << "," << csv_number(r.overlap) << ","
-      << (r.repeats_agree ? 1 : 0) << "," << (r.log_bytes_per_event < 0 ? "" : csv_number(r.log_bytes_per_event));
+      << csv_number(r.overlap_snapshot) << "," << res.plan.timing_events << "," << (r.repeats_agree ? 1 : 0) << "," << (r.log_bytes_per_event < 0 ? "" : csv_number(r.log_bytes_per_event));
     for (std::size_t k = 0; k < res.plan.reversal_collisions.size(); ++k)
       o << "," << (k < r.reversal_rms.size() ? csv_number(r.reversal_rms[k]) : "");
     for (std::size_t k = 0; k < res.plan.reversal_collisions.size(); ++k)
@@ -61,14 +61,17 @@ std::string engine_csv(const StudyResults& res) {
 
 std::string stepped_csv(const SteppedStudy& st) {
   std::ostringstream o;
-  o << "method,dt_over_tau,dt,cpu_seconds,pair_collisions,rate_error,largest_overlap,cooling_cpu_seconds,"
-       "cooling_error,tau,span,cooling_span,rate_stderr,failure\n";
+  o << "method,dt_over_tau,dt,step_over_diameter,cpu_seconds,cpu_ratio,pair_collisions,rate_error,energy_drift,"
+       "largest_overlap,cooling_cpu_seconds,cooling_cpu_ratio,cooling_error,tau,tau_cooling,diameter,v_rms,span,"
+       "cooling_span,rate_stderr,failure\n";
   for (const SteppedRow& r : st.rows)
-    o << r.method << "," << csv_number(r.dt_over_tau) << "," << csv_number(r.dt) << "," << csv_number(r.cpu_seconds)
-      << "," << r.pair_collisions << "," << csv_number(r.rate_error) << "," << csv_number(r.overlap) << ","
-      << csv_number(r.cooling_cpu_seconds) << "," << csv_number(r.cooling_error) << "," << csv_number(st.tau) << ","
-      << csv_number(st.span) << "," << csv_number(st.cooling_span) << "," << csv_number(st.rate_stderr) << ",\""
-      << r.failure << "\"\n";
+    o << r.method << "," << csv_number(r.dt_over_tau) << "," << csv_number(r.dt) << ","
+      << csv_number(r.step_over_diameter) << "," << csv_number(r.cpu_seconds) << "," << csv_number(r.cpu_ratio)
+      << "," << r.pair_collisions << "," << csv_number(r.rate_error) << "," << csv_number(r.energy_drift) << ","
+      << csv_number(r.overlap) << "," << csv_number(r.cooling_cpu_seconds) << "," << csv_number(r.cooling_cpu_ratio)
+      << "," << csv_number(r.cooling_error) << "," << csv_number(st.tau) << "," << csv_number(st.tau_cooling) << ","
+      << csv_number(st.diameter) << "," << csv_number(st.v_rms) << "," << csv_number(st.span) << ","
+      << csv_number(st.cooling_span) << "," << csv_number(st.rate_stderr) << ",\"" << r.failure << "\"\n";
   return o.str();
 }
 
@@ -95,7 +98,7 @@ void engine_tables(std::ostringstream& o, const StudyResults& res) {
   const std::string cs = slash_list(plan.reversal_collisions, 3);
   for (const std::string& scene : engine_scenes()) {
     o << "### " << scene << " (examples/accuracy/" << scene << ".toml)\n\n";
-    o << "| setting | ns/event | × double | energy drift | largest overlap | reversal RMS / d, c = " << cs
+    o << "| setting | ns/event | × double | energy drift | largest overlap at a collision | reversal RMS / d, c = " << cs
       << " | back within d, c = " << cs << " | one ulp apart: collisions/disk to l / to d | log B/event |\n";
     o << "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     const double base = double_ns(res.engine, scene);
@@ -114,29 +117,36 @@ void engine_tables(std::ostringstream& o, const StudyResults& res) {
     }
     o << "\n";
   }
-  o << "N = " << (res.engine.empty() ? 0.0 : res.engine.front().disks) << " disks per scene, " << fmt(double(plan.events))
-    << " engine events per timed run, medians of " << plan.repeat
-    << " runs; errors from the first run (\"(!)\": the repeats disagreed). d: disk diameter; l: mean free path "
-       "(v_rms tau).\n\n";
+  o << "N = " << (res.engine.empty() ? 0.0 : res.engine.front().disks) << " disks per scene. Errors after "
+    << fmt(double(plan.events)) << " engine events (drift: at the end; overlap: the largest at any pair collision); "
+    << "ns/event: median of " << plan.repeat << " runs of " << fmt(double(plan.timing_events))
+    << " events, interleaved over the settings (\"(!)\": a timed run's drift differed from the error run's). "
+       "d: disk diameter; l: mean free path (v_rms tau).\n\n";
 }
 
 void stepped_table(std::ostringstream& o, const SteppedStudy& st) {
   o << "### Time-stepped against event-driven (gas: collision rate; cooling: E(t)/E0)\n\n";
-  o << "| method | dt / tau | CPU s (gas) | pair collisions | rate error | largest overlap | CPU s (cooling) | "
-       "cooling error |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
+  o << "| method | dt / tau | v dt / d | CPU s (gas) | × event-driven | rate error | energy drift | largest overlap "
+       "| CPU s (cooling) | × event-driven | cooling error |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const SteppedRow& r : st.rows) {
     if (!r.failure.empty()) {
       o << "| " << r.method << " | " << fmt(r.dt_over_tau) << " | failed: " << r.failure << " |\n";
       continue;
     }
-    const bool ed = r.method == "event-driven";
-    o << "| " << r.method << " | " << (ed ? "–" : fmt(r.dt_over_tau)) << " | " << fmt(r.cpu_seconds) << " | "
-      << r.pair_collisions << " | " << (ed ? "(reference)" : fmt(r.rate_error, 2)) << " | " << fmt(r.overlap, 2)
-      << " | " << fmt(r.cooling_cpu_seconds) << " | " << (ed ? "(reference)" : fmt(r.cooling_error, 2)) << " |\n";
+    const bool ts = r.method == "time-stepped", ref = r.method == "event-driven";
+    o << "| " << r.method << " | " << (ts ? fmt(r.dt_over_tau) : "–") << " | "
+      << (ts ? fmt(r.step_over_diameter, 2) : "–") << " | " << fmt(r.cpu_seconds) << " | " << fmt(r.cpu_ratio, 2)
+      << " | " << (ref ? "(reference)" : fmt(r.rate_error, 2)) << " | " << fmt(r.energy_drift, 2) << " | "
+      << fmt(r.overlap, 2) << " | " << fmt(r.cooling_cpu_seconds) << " | " << fmt(r.cooling_cpu_ratio, 2) << " | "
+      << (ref ? "(reference)" : fmt(r.cooling_error, 2)) << " |\n";
   }
-  o << "\ntau = " << fmt(st.tau) << " (mean free time of the gas); runs to " << fmt(st.span) << " (gas) and "
-    << fmt(st.cooling_span) << " (cooling, where the event-driven E/E0 = " << fmt(st.energy_end)
-    << "). The event-driven rate's own standard error (10 blocks): " << fmt(st.rate_stderr, 2) << ".\n\n";
+  o << "\ntau = " << fmt(st.tau) << " (mean free time of the gas), d = " << fmt(st.diameter) << ", v_rms = "
+    << fmt(st.v_rms) << "; runs to " << fmt(st.span) << " (gas) and " << fmt(st.cooling_span)
+    << " (cooling, where the event-driven E/E0 = " << fmt(st.energy_end)
+    << "). \"Other seed\": the event-driven engine on another sample of the same gas, the noise floor of both "
+       "errors. The event-driven rate's own standard error (10 blocks): "
+    << fmt(st.rate_stderr, 2) << ". Largest overlap: time-stepped, every overlap found before resolution; "
+       "event-driven, all near pairs at 10 samples.\n\n";
 }
 
 void log_table(std::ostringstream& o, const std::vector<LogRow>& rows) {

@@ -45,8 +45,12 @@ std::string scalar_override(Precision p) {
                                       : "engine.scalar=double";
 }
 
-Result<StudyScene> load_study_scene(const std::string& path, const Setting& setting) {
-  auto scene = load_scene_file(path, {Override{scalar_override(setting.precision)}});
+Result<StudyScene> load_study_scene(const std::string& path, const Setting& setting,
+                                    std::vector<std::string> overrides) {
+  overrides.push_back(scalar_override(setting.precision));
+  std::vector<Override> all;
+  for (std::string& o : overrides) all.push_back(Override{std::move(o)});
+  auto scene = load_scene_file(path, all);
   if (!scene) return scene.error();
   auto initial = build_initial_state(scene.value());
   if (!initial) return initial.error();

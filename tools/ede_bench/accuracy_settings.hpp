@@ -58,9 +58,10 @@ struct StudyScene {
   InitialState initial;
   EngineOptions options;
 };
-// Loads `path`, records the setting's scalar type in the scene (for a log header; double
+// Loads `path` with `overrides`, records the setting's scalar type in the scene (for a log header; double
 // for __float128, which has no log) and sets the contact root.
-Result<StudyScene> load_study_scene(const std::string& path, const Setting& setting);
+Result<StudyScene> load_study_scene(const std::string& path, const Setting& setting,
+                                    std::vector<std::string> overrides = {});
 
 // The time at which the disks of a run of `s` have had `collisions` collisions each (a probe run).
 template <class T>

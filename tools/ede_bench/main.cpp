@@ -55,8 +55,10 @@ int main(int argc, char** argv) {
   CLI::App* a = app.add_subcommand("accuracy", "ns per event against the errors each accuracy setting leaves");
   a->add_option("--out", accuracy.out_dir, "folder for the CSV tables, tables.md and accuracy.png");
   a->add_option("--scenes", accuracy.scenes_dir, "folder of the study's scenes (examples/accuracy)");
-  CLI::Option* a_events = a->add_option("--events", accuracy.events, "engine events per timed run (default 10^7)")
+  CLI::Option* a_events = a->add_option("--events", accuracy.events, "engine events per error run (default 10^7)")
                               ->check(CLI::Range(std::uint64_t(1000), std::uint64_t(1) << 40));
+  a->add_option("--timing-events", accuracy.timing_events, "engine events per timed run (default 2*10^6)")
+      ->check(CLI::Range(std::uint64_t(1000), std::uint64_t(1) << 40));
   CLI::Option* a_repeat = a->add_option("--repeat", accuracy.repeat, "timed runs per measurement; medians are reported")
                               ->check(CLI::Range(1, 100));
   a->add_option("--tmp-dir", accuracy.tmp_dir, "where the temporary logs go (deleted as soon as read)");
