@@ -30,7 +30,9 @@ struct Setting {
 const char* precision_name(Precision p);  // "float", "double", "long double", "__float128"
 bool precision_built(Precision p);        // __float128 only with EDE_HAVE_FLOAT128
 bool has_log(Precision p);                // the log writer exists for every type but __float128
-// Every precision this build has, each with the stable and the textbook root.
+// Every precision this build has with the stable root, then the hardware types with the textbook root.
+// __float128 (software arithmetic, 10-20x the time of double per event) runs the stable root only: its
+// rows are there for how far round-off can be pushed, and the roots differ by round-off alone.
 std::vector<Setting> study_settings();
 
 // Calls f.template operator()<T>() with the setting's scalar type, like tools::with_scalar.
