@@ -61,6 +61,14 @@ sim "$root/examples/crater.toml" -o "$logs/crater.ede"
 "$tools/ede-crater" scan "$root/examples/crater.toml" --param species.projectile.mass --values 5,10,25,50 \
   --seeds 3 --out "$logs/crater-scan" --metric depth --plot "$out/crater-depth-vs-mass.png" -q | tail -n 6
 
+section "crater under gravity: the bed settles, then the projectile falls (examples/crater-gravity.toml)"
+sim "$root/examples/crater-gravity.toml" -o "$logs/crater-gravity.ede"
+"$tools/ede-crater" "$logs/crater-gravity.ede" --before 0.5 --at end --plot "$out/crater-gravity-profile.png" \
+  | grep -E '^(displaced|depth|width)'
+for t in 0 0.5 0.6 end; do
+  "$tools/ede-render" "$logs/crater-gravity.ede" --at $t --color speed -o "$out/crater-gravity-$t.png"
+done
+
 section "polydisperse gas, mass proportional to area (examples/polydisperse.toml)"
 sim "$root/examples/polydisperse.toml" -o "$logs/polydisperse.ede"
 "$tools/ede-stats" hist "$logs/polydisperse.ede" --quantity energy --from 0.05 --every 0.01 \

@@ -1,6 +1,7 @@
 // Fuzz target: the engine on random small scenes, with every invariant checked.
 //
-// The bytes choose 2-50 disks (radii, masses up to a ratio of 10^4, velocities), the boundary (walls or
+// The bytes choose 2-50 disks (radii, masses up to a ratio of 10^4, velocities), or 128-264 small disks with
+// up to three big ones (kept out of the cell lists, big_disks.hpp), the boundary (walls or
 // periodic), restitution for pairs and walls, the TC model, then run at most 3000 events while writing a
 // log. Checked after every slice of events and at the end:
 //   - no pair overlaps by more than 1e-6 of its contact distance, and no prediction lies in the past;
@@ -55,16 +56,44 @@ inline Totals totals(const ede::Particles<double>& p) {
   return t;
 }
 
-// Disks on a jittered grid: one per cell, never overlapping, inside the box.
-inline ede::InitialState make_state(Bytes& in) {
+// Up to three big disks over a state, removing the disks they would overlap (and skipping a big disk
+// that would overlap an earlier big one).
+inline void add_big_disks(Bytes& in, ede::InitialState& s) {
+  const int count = 1 + in.byte() % 3;
+  for (int b = 0; b < count; ++b) {
+    const double r = 0.05 + 0.1 * in.unit();
+    const double x = r + (1 - 2 * r) * in.unit() * 0.999 + 1e-4;
+    const double y = r + (1 - 2 * r) * in.unit() * 0.999 + 1e-4;
+    const double m = 1 + 100 * in.unit();
+    const double vx = 4 * in.unit() - 2;
+    const double vy = 4 * in.unit() - 2;
+    ede::InitialState kept;
+    kept.species_names = s.species_names;
+    bool clear = true;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      const bool covered = std::hypot(s.x[i] - x, s.y[i] - y) <= r + s.radius[i] + 1e-9;
+      if (covered && s.radius[i] > 0.02) clear = false;  // an earlier big disk: keep it, skip this one
+      if (!covered || s.radius[i] > 0.02) kept.add(s.x[i], s.y[i], s.vx[i], s.vy[i], s.radius[i], s.mass[i], 0);
+    }
+    if (!clear) continue;
+    kept.add(x, y, vx, vy, r, m, 0);
+    s = kept;
+  }
+}
+
+// Disks on a jittered grid: one per cell, never overlapping, inside the box. With `big`, 128-264 small
+// disks and up to three big ones (radius 0.05-0.15) placed over them, the small disks they cover removed:
+// the engine then keeps the big ones out of its cell lists (big_disks.hpp).
+inline ede::InitialState make_state(Bytes& in, bool big) {
   ede::InitialState s;
   s.species_names = {"a"};
-  const int n = 2 + in.byte() % 49;
+  const int n = big ? 128 + in.byte() % 137 : 2 + in.byte() % 49;
   const int side = int(std::ceil(std::sqrt(double(n))));
   const double cell = 1.0 / side;
   const bool heavy = in.byte() % 8 == 0;
+  const double r_max = big ? 0.01 : 0.05;
   for (int k = 0; k < n; ++k) {
-    const double r = std::min(0.45 * cell, 0.003 + 0.05 * in.unit());
+    const double r = std::min(0.45 * cell, 0.003 + r_max * in.unit());
     const double room = cell / 2 - r;
     const double x = (k % side + 0.5) * cell + (2 * in.unit() - 1) * room * 0.99;
     const double y = (k / side + 0.5) * cell + (2 * in.unit() - 1) * room * 0.99;
@@ -75,6 +104,7 @@ inline ede::InitialState make_state(Bytes& in) {
     const double vy = 2 * in.unit() - 1;
     s.add(x, y, vx, vy, r, m, 0);
   }
+  if (big) add_big_disks(in, s);
   return s;
 }
 
@@ -99,7 +129,7 @@ inline bool fuzz_engine(const std::uint8_t* data, std::size_t size) {
   o.stop.events = 3000;
   o.rebuild_interval = 500 + 10 * in.byte();
   o.stall_limit = 20000;
-  const ede::InitialState s = make_state(in);
+  const ede::InitialState s = make_state(in, (flags & 16) != 0);
   auto made = ede::make_engine<double>(s, o);
   CHECK_OR_FAIL(made.ok());  // the grid placement is valid by construction
   ede::EngineApi<double>& engine = *made.value();

@@ -19,4 +19,8 @@ build/tools/ede-sim examples/scenes/periodic.toml -o $c/log/periodic.ede $small 
 head -c 4 "$c/log/head-on.ede" > $c/log/cut-magic.ede
 head -c 300 "$c/log/everything.ede" > $c/log/cut-early.ede
 for k in 1 2 3 4; do head -c $((64 * k)) /dev/urandom > $c/queue/random-$k; head -c $((100 * k)) /dev/urandom > $c/engine/random-$k; done
+# Engine inputs in the big-disk mode (flag bit 4): walls, periodic, inelastic with TC, inelastic walls.
+for f in 10:big-walls 11:big-periodic 17:big-periodic-inelastic-tc 1a:big-walls-inelastic; do
+  { printf "\x${f%%:*}"; head -c 1400 /dev/urandom; } > $c/engine/${f#*:}
+done
 echo "fuzz corpus: $(ls $c/scene | wc -l) scenes, $(ls $c/log | wc -l) logs, $(ls $c/queue | wc -l) queue, $(ls $c/engine | wc -l) engine inputs"

@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "ede/scene_loader.hpp"
+#include "engine_core.hpp"
 #include "log_test_support.hpp"
 
 using namespace ede;
@@ -151,6 +152,34 @@ TEST_CASE("gravity: an inelastic bed with TC settles without stalling", "[gravit
   double highest = 0;
   for (std::size_t i = 0; i < s.size(); ++i) highest = std::max(highest, y_now(*e, i));
   CHECK(highest < 0.6);  // 225 disks of radius 0.015 on a unit floor: a few layers, well below 0.6
+}
+
+TEST_CASE("gravity: disks at rest exactly on cell sides fall through them", "[gravity]") {
+  // Regression: a disk at rest on a cell's lower side crossed into the cell below at once, and from there
+  // "crossed" back up (the touch of s = 0, u = 0 pushed inwards counted as a crossing), forever at t = 0.
+  // Found with the projectile of examples/crater-gravity.toml at y = 1.8 = 36 cells of 0.05.
+  InitialState s = box();
+  for (int k = 0; k < 100; ++k) s.add(0.005 + 0.01 * k, 0.95, 0.0, 0.0, 0.004, 1.0, 0);  // sets the grid
+  std::vector<std::size_t> on_sides;
+  for (int k = 1; k <= 4; ++k) {  // small disks on the sides of cells 1..4, heights set below
+    on_sides.push_back(s.size());
+    s.add(0.1 * k, 0.0, 0.0, 0.0, 0.002, 1.0, 0);
+  }
+  on_sides.push_back(s.size());  // a big disk (outside the cell lists) on a side too, as the projectile
+  s.add(0.7, 0.0, 0.0, 0.0, 0.05, 1.0, 0);
+  const GridShape shape = engine_grid_for(s, false, Algorithm::Cells);  // depends on the count, not on y
+  REQUIRE(shape.split.big_radius < 0.05);  // the big disk is kept out of the cell lists
+  REQUIRE(shape.ny >= 8);
+  const double wy = 1.0 / double(shape.ny);
+  for (std::size_t k = 0; k < on_sides.size(); ++k) s.y[on_sides[k]] = double(k + 1) * wy;
+  s.y[on_sides.back()] = double(shape.ny / 2) * wy;
+  const double fall = 0.5 * wy;  // the distance each disk drops in the run
+  // Dropped from rest under g = 1, each falls 0.5 wy by t = sqrt(wy).
+  auto e = engine(s, under_gravity(1.0, std::sqrt(wy)));
+  REQUIRE(e->run() == RunStatus::ReachedTime);
+  CHECK(e->counts().of(EventKind::Cell) < 100);
+  for (std::size_t i : on_sides) CHECK(y_now(*e, i) == Approx(s.y[i] - fall).epsilon(1e-12));
+  CHECK(e->check_invariants(1e-12) == "");
 }
 
 TEST_CASE("gravity: a ball bouncing to rest without TC stalls with a message that says why", "[gravity][inelastic]") {

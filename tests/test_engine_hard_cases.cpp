@@ -128,9 +128,10 @@ TEST_CASE("hard case: mass ratio 1e6 and radii 1e-3 with 0.1 in one scene", "[ha
   for (const auto& h : heavy_at) t.add(h[0], h[1], 0.0, 0.0, 0.1, 1e6, 0);
   EngineOptions o;
   o.boundary = BoundaryKind::Periodic;
-  o.stop.events = 200000;
+  o.stop.collisions_per_particle = 60;  // ~11 000 pair collisions
   auto e = engine(t, o);
-  REQUIRE(e->run() == RunStatus::ReachedEvents);
+  CHECK(e->effects().find("3 big disks") != std::string::npos);  // outside the cell lists: big_disks.hpp
+  REQUIRE(e->run() == RunStatus::ReachedCollisions);
   CHECK(e->counts().of(EventKind::Pair) > 10000);
   const double e0 = total_energy(t);
   CHECK(std::abs(kinetic_energy(e->particles()) - e0) / e0 < 1e-12);
@@ -141,6 +142,62 @@ TEST_CASE("hard case: mass ratio 1e6 and radii 1e-3 with 0.1 in one scene", "[ha
   CHECK(std::abs(px - px0) < 1e-12);
   CHECK(std::abs(py - py0) < 1e-12);
   CHECK(e->check_invariants(1e-9) == "");
+}
+
+namespace {
+// A gas of 600 small disks (r = 0.01) with three big ones (r = 0.06, 0.08, 0.1) moving fast through it.
+InitialState gas_with_big_disks() {
+  const InitialState gas = lattice_gas(25, 0.01, 1.0, 17);
+  const double big[3][5] = {{0.2, 0.2, 3.0, 1.0, 0.06}, {0.7, 0.3, -1.0, 2.0, 0.08}, {0.45, 0.75, 0.5, -2.5, 0.1}};
+  InitialState s = box();
+  for (std::size_t i = 0; i < gas.size(); ++i) {
+    bool clear = true;
+    for (const auto& b : big) clear = clear && std::hypot(gas.x[i] - b[0], gas.y[i] - b[1]) > b[4] + 0.01 + 1e-9;
+    if (clear) s.add(gas.x[i], gas.y[i], gas.vx[i], gas.vy[i], 0.01, 1.0, 0);
+  }
+  for (const auto& b : big) s.add(b[0], b[1], b[2], b[3], b[4], 30.0, 0);
+  return s;
+}
+}  // namespace
+
+TEST_CASE("hard case: big disks outside the cell lists meet every disk they should", "[hard][big]") {
+  // The all-pairs baseline checks every pair after every event: the cell engine with its big-disk rule
+  // must produce the same collisions (to round-off, until chaos parts the sequences) in both boundaries,
+  // and keep every invariant over a long run.
+  const InitialState s = gas_with_big_disks();
+  for (BoundaryKind bc : {BoundaryKind::Walls, BoundaryKind::Periodic}) {
+    EngineOptions o;
+    o.boundary = bc;
+    o.stop.events = 60000;
+    EngineOptions naive = o;
+    naive.algorithm = Algorithm::AllPairs;
+    auto a = engine(s, o);
+    auto b = engine(s, naive);
+    INFO(a->effects());
+    REQUIRE(a->effects().find("3 big disks") != std::string::npos);
+    Recorder<double> ra, rb;
+    a->add_sink(&ra);
+    b->add_sink(&rb);
+    a->run();
+    b->run();
+    const auto pa = ra.of_kind(EventKind::Pair), pb = rb.of_kind(EventKind::Pair);
+    std::size_t same = 0, with_big = 0;
+    const auto key = [](const EventOutcome<double>& e) { return std::make_pair(std::min(e.i, e.j), std::max(e.i, e.j)); };
+    while (same < std::min(pa.size(), pb.size()) && key(pa[same]) == key(pb[same]) &&
+           std::abs(pa[same].time - pb[same].time) < 1e-9) {
+      if (std::max(pa[same].i, pa[same].j) >= std::int32_t(s.size()) - 3) ++with_big;
+      ++same;
+    }
+    INFO("first " << same << " pair collisions agree, " << with_big << " of them with a big disk");
+    CHECK(same >= 300);
+    CHECK(with_big >= 30);
+    // A long run: no overlap, energy kept, no event in the past.
+    o.stop.events = 400000;
+    auto c = engine(s, o);
+    c->run();
+    CHECK(c->check_invariants(1e-9) == "");
+    CHECK(std::abs(kinetic_energy(c->particles()) - total_energy(s)) < 1e-12 * total_energy(s));
+  }
 }
 
 TEST_CASE("hard case: packing 0.8 runs without overlaps or stalls", "[hard]") {

@@ -107,6 +107,9 @@ TEST_CASE("time_to_reach_accelerated: falling, thrown up, bouncing, turning back
   CHECK(time_to_reach_accelerated(0.0, 0.0, -1.0) == 0.0);
   // At the line, moving in and pushed further in: never.
   CHECK(time_to_reach_accelerated(0.0, 1.0, 1.0) == kNever<double>);
+  // At rest on the line and pushed inwards, or rising to touch it exactly: touched, never crossed.
+  CHECK(time_to_reach_accelerated(0.0, 0.0, 1.0) == kNever<double>);
+  CHECK(time_to_reach_accelerated(0.5, -1.0, 2.0) == kNever<double>);
   // A record from before a cell crossing: 0.1 below the line it has crossed since, rising at 1 under g = 1.
   // s(t) = -0.1 + t - t^2/2 falls back through 0 at t = 1 + sqrt(1 - 0.2) (the rise through 0 is earlier).
   CHECK(time_to_reach_accelerated(-0.1, 1.0, -1.0) == Approx(1 + std::sqrt(0.8)).epsilon(1e-15));

@@ -73,6 +73,43 @@ TEST_CASE("ede-crater: the time of the measurement: energy fraction, --at, --at 
   CHECK(contains(half.out, "moved by more than 0.001 ("));
 }
 
+TEST_CASE("ede-crater: a crater under gravity is measured at a time asked for, against a settled bed (--before)",
+          "[tool][ede-crater]") {
+  // examples/crater-gravity.toml with a thin bed (200 disks) and a short run: the bed settles, the
+  // projectile dropped from y = 1.8 reaches it at t ~ 0.55.
+  const std::string log =
+      sim_log(source_path("examples/crater-gravity.toml"), " --set species.bed.count=200 --set stop.time=0.7",
+              temp_path("crater-gravity.ede"), "crater-sim-gravity");
+  const ToolRun no_time = crater(log, "gravity-no-time");
+  CHECK(no_time.status == 1);
+  CHECK(contains(no_time.err, "the run is under gravity"));
+  CHECK(contains(no_time.err, "measure at a time with --at T (or --at end)"));
+
+  const std::string csv = temp_path("crater-gravity.csv"), png = temp_path("crater-gravity.png");
+  std::filesystem::remove(temp_path("crater-gravity-energy.csv"));
+  const ToolRun r = crater(log + " --before 0.5 --at end -o " + csv + " --plot " + png, "gravity");
+  INFO(r.out << r.err);
+  REQUIRE(r.status == 0);
+  CHECK(contains(r.out, "measured at       t = 0.69999999999999996, after"));
+  CHECK(contains(r.out, "compared with     the bed at t = 0.5 (--before)"));
+  CHECK(contains(r.out, "no fraction under gravity"));
+  CHECK(lines(read_file(csv)).size() > 10);
+  CHECK_FALSE(std::filesystem::exists(temp_path("crater-gravity-energy.csv")));  // no curve to write
+  CHECK(read_file(png).substr(1, 3) == "PNG");
+
+  // Against the loose initial bed, the settling alone reads as a "crater" across the whole box.
+  const ToolRun loose = crater(log + " --at end", "gravity-loose");
+  REQUIRE(loose.status == 0);
+  CHECK_FALSE(contains(loose.out, "compared with"));
+
+  const ToolRun reversed = crater(log + " --before 0.6 --at 0.55", "gravity-reversed");
+  CHECK(reversed.status == 1);
+  CHECK(contains(reversed.err, "before the reference state (--before 0.6): measure later"));
+  const ToolRun word = crater(log + " --before soon --at end", "gravity-word");
+  CHECK(word.status == 1);
+  CHECK(contains(word.err, "--before 'soon' is not a time"));
+}
+
 TEST_CASE("ede-crater scan: deterministic CSV, the same for --jobs 1 and 2", "[tool][ede-crater]") {
   const std::string common = "scan " + kScene + " --param species.projectile.mass --values 5,25 --seeds 2 -q" +
                              kSmall + " --set species.bed.count=200 --out ";

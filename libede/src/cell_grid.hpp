@@ -85,6 +85,12 @@ class CellGrid {
     insert(disk, cell);
   }
 
+  // A big disk (big_disks.hpp) has a cell, for its crossing events and its reach, but is in no list.
+  void set_home(std::int32_t disk, std::int32_t cell) {
+    disks_[disk].cell = cell;
+    disks_[disk].next_in_cell = kNone;
+  }
+
   std::size_t memory_bytes() const { return (head_.capacity() + prev_.capacity()) * sizeof(std::int32_t); }
 
  private:

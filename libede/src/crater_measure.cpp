@@ -7,6 +7,9 @@
 // time by the shared drift function and only then converted to double for the geometry.
 // Rejected: taking the state from the engine at its stop (ede-sim --final-state), which ties the metric
 // to the scene's stop condition; from a log any time, and any fraction, can be measured.
+// Under gravity there is no energy fraction (see CraterMeasurement::has_energy): the time is asked for.
+#include <limits>
+
 #include "ede/crater.hpp"
 #include "ede/engine.hpp"
 #include "ede/replay.hpp"
@@ -45,15 +48,22 @@ Result<CraterMeasurement> measure_crater(std::shared_ptr<const LogReader> log, c
   auto bed = select_bed(log->header(), req.bed_species);
   if (!bed) return Error{log->path() + ": " + bed.error().message};
   m.bed = std::move(bed).value();
-  auto energy = energy_fraction_curve(log, req.energy_fraction, req.curve_points);
-  if (!energy) return energy.error();
-  m.energy = std::move(energy).value();
+  m.has_energy = log->header().gx == 0 && log->header().gy == 0;
+  if (!m.has_energy && !req.at && !req.at_end)
+    return Error{log->path() + ": the run is under gravity, where the kinetic energy changes between collisions "
+                 "and its fraction does not mark the end of the impact; measure at a time with --at T (or --at end)"};
+  if (m.has_energy) {
+    auto energy = energy_fraction_curve(log, req.energy_fraction, req.curve_points);
+    if (!energy) return energy.error();
+    m.energy = std::move(energy).value();
+  }
   m.box = {log->header().lx, log->header().ly, log->header().boundary == BoundaryKind::Periodic};
 
   auto made = Replay<T>::create(log);
   if (!made) return made.error();
   Replay<T>& replay = *made.value();
-  if (Status s = replay.seek_event(0); !s) return s.error();
+  if (Status s = req.before ? replay.seek_time(*req.before) : replay.seek_event(0); !s) return s.error();
+  m.before_time = double(replay.time());
   const DiskPositions before = positions(replay.particles(), replay.time());
 
   const std::string f = short_number(req.energy_fraction);
@@ -76,8 +86,12 @@ Result<CraterMeasurement> measure_crater(std::shared_ptr<const LogReader> log, c
                               short_number(m.energy.end_fraction) + " of it is left at the end)";
   }
   m.time = double(replay.time());
+  if (m.time < m.before_time)
+    return Error{log->path() + ": the crater is measured at t = " + short_number(m.time) +
+                 ", before the reference state (--before " + short_number(m.before_time) + "): measure later"};
   m.events = replay.events_applied();
-  m.energy_fraction = kinetic_energy(replay.particles()) / m.energy.initial_energy;
+  m.energy_fraction = m.has_energy ? kinetic_energy(replay.particles()) / m.energy.initial_energy
+                                   : std::numeric_limits<double>::quiet_NaN();
   const DiskPositions after = positions(replay.particles(), replay.time());
   auto report = analyze_crater(before, after, m.bed.is_bed, m.box, req.settings);
   if (!report) return Error{log->path() + ": " + report.error().message};

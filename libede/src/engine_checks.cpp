@@ -58,7 +58,7 @@ Status check_engine_input(const InitialState& init, const EngineOptions& options
       << 2 * max_radius << ", box " << init.lx << " x " << init.ly << "); enlarge the box or use walls";
     return Error{m.str()};
   }
-  shape = grid_shape_for(init.lx, init.ly, max_radius, n, periodic, options.algorithm);
+  shape = engine_grid_for(init, periodic, options.algorithm);
   return Ok{};
 }
 

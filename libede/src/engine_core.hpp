@@ -5,7 +5,9 @@
 // involved to the event time (lazy state: nobody else moves), resolve, tell the sinks, re-predict those
 // disks only. Each disk holds one prediction (its earliest collision, wall hit, or cell crossing), so the
 // queue has N keys and a prediction looks at the 3 x 3 cells around the disk: the cost per event does not
-// depend on N. Disks at rest predict nothing and cost nothing until something approaches them.
+// depend on N. Disks at rest predict nothing and cost nothing until something approaches them. The few
+// disks much larger than the rest stay out of the cell lists (big_disks.hpp), so they do not set the
+// cell size for everyone.
 // Rejected: storing every predicted pair event (the queue grows with density and fills with stale events)
 // and updating every disk to the current time at each event (O(N) per event).
 #pragma once
@@ -17,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "big_disks.hpp"
 #include "candidate.hpp"
 #include "cell_grid.hpp"
 #include "collide.hpp"
@@ -37,9 +40,13 @@ namespace ede {
 // in a periodic box (so the 3 x 3 neighbourhood holds distinct cells and each has one image).
 struct GridShape {
   std::int32_t nx = 1, ny = 1;
+  DiskSizeSplit split;  // big disks (big_disks.hpp): the grid is sized by split.small_max_radius
 };
 GridShape grid_shape_for(double lx, double ly, double max_radius, std::size_t disks, bool periodic,
                          Algorithm algorithm);
+// The grid for an initial state: big disks kept out of the cell lists when some stand out and the box
+// allows it (periodic: n >= 2 reach + 3 on each side), else every disk in the grid.
+GridShape engine_grid_for(const InitialState& init, bool periodic, Algorithm algorithm);
 
 template <class T, class Boundary, class Dissipation, class Field = NoField, class Contact = StableContact>
 class Engine final : public EngineApi<T> {
@@ -76,6 +83,7 @@ class Engine final : public EngineApi<T> {
     }
     b_noise2_ = b_noise2_for(std::max(lx_, ly_));
     grid_.reset(shape.nx, shape.ny, lx_, ly_, p_.disk);
+    find_big_disks(init, shape.split);
     queue_.reset(static_cast<std::uint32_t>(p_.size()));
     pred_.assign(p_.size(), Prediction{kNever<T>, kNever<T>, -1, 0, EventKind::Pair, kCrossRight});
     stall_limit_ = options.stall_limit ? options.stall_limit
@@ -109,13 +117,15 @@ class Engine final : public EngineApi<T> {
     if constexpr (kGravity) s << ", gravity (" << opt_.physics.gravity[0] << ", " << opt_.physics.gravity[1] << ")";
     if constexpr (kTextbook) s << ", textbook contact root";
     s << ", grid " << grid_.nx() << "x" << grid_.ny();
+    if (!big_.empty()) s << " + " << big_.size() << (big_.size() == 1 ? " big disk" : " big disks");
     return s.str();
   }
 
   std::size_t memory_bytes() const override {
     return p_.disk.capacity() * sizeof(Disk<T>) + p_.mass.capacity() * sizeof(T) +
            p_.species.capacity() * sizeof(std::int32_t) + p_.last_collision.capacity() * sizeof(T) +
-           pred_.capacity() * sizeof(Prediction) + grid_.memory_bytes() + queue_.memory_bytes();
+           pred_.capacity() * sizeof(Prediction) + grid_.memory_bytes() + queue_.memory_bytes() +
+           big_.capacity() * sizeof(BigDisk);
   }
 
   RunStatus run(std::uint64_t max_events) override {
@@ -158,16 +168,9 @@ class Engine final : public EngineApi<T> {
 
   double largest_overlap() const override {
     double worst = 0;
-    for (std::size_t i = 0; i < p_.size(); ++i) {
-      const Position2<T> pi = pos_at(p_.disk[i]);
-      for_each_neighbour(std::int32_t(i), grid_.cell_of(std::int32_t(i)), [&](std::int32_t k, T sx, T sy) {
-        if (std::size_t(k) <= i) return;
-        const Position2<T> pk = pos_at(p_.disk[k]);
-        const double dx = double((pk.x + sx) - pi.x), dy = double((pk.y + sy) - pi.y);
-        const double s = double(p_.disk[i].r + p_.disk[k].r);
-        worst = std::max(worst, (s - std::sqrt(dx * dx + dy * dy)) / s);
-      });
-    }
+    for_each_near_pair([&](std::int32_t, std::int32_t, double distance, double contact) {
+      worst = std::max(worst, (contact - distance) / contact);
+    });
     return worst;
   }
 
@@ -175,21 +178,40 @@ class Engine final : public EngineApi<T> {
   // distance) at the current time, and predictions in the past. Empty when all is well. O(N) with the grid.
   std::string check_invariants(double tolerance) const override {
     std::ostringstream problems;
-    const std::size_t n = p_.size();
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = 0; i < p_.size(); ++i)
       if (queue_.key_of(std::uint32_t(i)).time < now_) problems << "disk " << i << " has an event in the past; ";
-      const Position2<T> pi = pos_at(p_.disk[i]);
+    for_each_near_pair([&](std::int32_t i, std::int32_t k, double distance, double contact) {
+      if (distance < contact * (1 - tolerance))
+        problems << "disks " << i << " and " << k << " overlap by " << (contact - distance) / contact
+                 << " of their contact distance; ";
+    });
+    return problems.str();
+  }
+
+  // Calls f(i, k, distance, contact distance) at now_ for every pair of disks close enough to touch
+  // (through any periodic image), each pair at least once: neighbouring cells, and big disks' reach.
+  template <class F>
+  void for_each_near_pair(F&& f) const {
+    const auto visit = [&](std::int32_t i, std::int32_t k, T sx, T sy) {
+      const Position2<T> pi = pos_at(p_.disk[i]), pk = pos_at(p_.disk[k]);
+      const double dx = double((pk.x + sx) - pi.x), dy = double((pk.y + sy) - pi.y);
+      f(i, k, std::sqrt(dx * dx + dy * dy), double(p_.disk[i].r + p_.disk[k].r));
+    };
+    for (std::size_t i = 0; i < p_.size(); ++i) {
+      if (is_big(p_.disk[i])) continue;
       for_each_neighbour(std::int32_t(i), grid_.cell_of(std::int32_t(i)), [&](std::int32_t k, T sx, T sy) {
-        if (std::size_t(k) <= i) return;
-        const Position2<T> pk = pos_at(p_.disk[k]);
-        const double dx = double((pk.x + sx) - pi.x), dy = double((pk.y + sy) - pi.y);
-        const double s = double(p_.disk[i].r + p_.disk[k].r);
-        if (std::sqrt(dx * dx + dy * dy) < s * (1 - tolerance))
-          problems << "disks " << i << " and " << k << " overlap by " << (s - std::sqrt(dx * dx + dy * dy)) / s
-                   << " of their contact distance; ";
+        if (std::size_t(k) > i) visit(std::int32_t(i), k, sx, sy);
       });
     }
-    return problems.str();
+    for (const BigDisk& b : big_) {
+      for_each_in_reach(b, [&](std::int32_t k, T sx, T sy) { visit(b.id, k, sx, sy); });
+      for (const BigDisk& other : big_) {
+        if (other.id <= b.id) continue;
+        const int images = kPeriodic ? 1 : 0;
+        for (int ky = -images; ky <= images; ++ky)
+          for (int kx = -images; kx <= images; ++kx) visit(b.id, other.id, T(kx) * lx_, T(ky) * ly_);
+      }
+    }
   }
 
  private:
@@ -242,7 +264,11 @@ class Engine final : public EngineApi<T> {
     grid_.reset(grid_.nx(), grid_.ny(), lx_, ly_, p_.disk);
     for (std::size_t i = 0; i < p_.size(); ++i) {
       const Position2<T> pos = pos_at(p_.disk[i]);
-      grid_.insert(std::int32_t(i), grid_.cell_containing(pos.x, pos.y));
+      const std::int32_t cell = grid_.cell_containing(pos.x, pos.y);
+      if (is_big(p_.disk[i]))
+        grid_.set_home(std::int32_t(i), cell);
+      else
+        grid_.insert(std::int32_t(i), cell);
     }
     for (std::size_t i = 0; i < p_.size(); ++i) predict(std::int32_t(i));
     if constexpr (kInelastic) ke_ = kinetic_energy(p_);
@@ -332,22 +358,77 @@ class Engine final : public EngineApi<T> {
     }
   }
 
+  // Disk i (at pi with velocity vi, now) against disk k's image shifted by (sx, sy): keeps the earlier.
+  void consider_pair(std::int32_t i, Position2<T> pi, Position2<T> vi, std::int32_t k, T sx, T sy,
+                     Candidate<T>& best) const {
+    const Disk<T>& di = p_.disk[i];
+    const Disk<T>& dk = p_.disk[k];
+    if (k == di.last_partner) {
+      const Position2<T> pk = pos_at(dk);
+      if (just_collided(i, k, (pk.x + sx) - pi.x, (pk.y + sy) - pi.y)) return;
+    }
+    const T t = pair_time(di, pi, vi, dk, sx, sy);
+    if (t > best.time) return;
+    const Candidate<T> c{t, EventKind::Pair, k};
+    if (c.before(best)) best = c;
+  }
+
   // Best pair candidate of disk i against the disks of cell (cx, cy).
   void scan_cell(std::int32_t i, Position2<T> pi, Position2<T> vi, std::int32_t cx, std::int32_t cy,
                  Candidate<T>& best) const {
-    const Disk<T>& di = p_.disk[i];
-    const std::int32_t lp = di.last_partner;
-    visit_cell(i, cx, cy, [&](std::int32_t k, T sx, T sy) {
-      const Disk<T>& dk = p_.disk[k];
-      if (k == lp) {
-        const Position2<T> pk = pos_at(dk);
-        if (just_collided(i, k, (pk.x + sx) - pi.x, (pk.y + sy) - pi.y)) return;
+    visit_cell(i, cx, cy, [&](std::int32_t k, T sx, T sy) { consider_pair(i, pi, vi, k, sx, sy, best); });
+  }
+
+  // --- big disks (big_disks.hpp) -----------------------------------------------------------------
+  struct BigDisk {
+    std::int32_t id, reach_x, reach_y;  // the block of cells it scans: (2 reach + 1) on each side
+  };
+
+  void find_big_disks(const InitialState& init, const DiskSizeSplit& split) {
+    big_radius_ = T(split.big_radius);
+    const double wx = double(lx_) / grid_.nx(), wy = double(ly_) / grid_.ny();
+    for (std::size_t i = 0; i < init.size(); ++i)
+      if (init.radius[i] > split.big_radius)
+        big_.push_back({std::int32_t(i), big_disk_reach(init.radius[i], split.small_max_radius, wx),
+                        big_disk_reach(init.radius[i], split.small_max_radius, wy)});
+  }
+
+  bool is_big(const Disk<T>& d) const { return d.r > big_radius_; }
+
+  const BigDisk& big_entry(std::int32_t i) const {
+    return *std::find_if(big_.begin(), big_.end(), [&](const BigDisk& b) { return b.id == i; });
+  }
+
+  // Disk i against every big disk (but itself). A small disk takes the nearest image, the only one it can
+  // reach before it next crosses a cell (n >= 2 reach + 3); two big disks try the 3 x 3 images.
+  void scan_big(std::int32_t i, Position2<T> pi, Position2<T> vi, bool i_big, Candidate<T>& best) const {
+    for (const BigDisk& b : big_) {
+      if (b.id == i) continue;
+      if constexpr (kPeriodic) {
+        if (i_big) {
+          for (int ky = -1; ky <= 1; ++ky)
+            for (int kx = -1; kx <= 1; ++kx) consider_pair(i, pi, vi, b.id, T(kx) * lx_, T(ky) * ly_, best);
+          continue;
+        }
+        const Position2<T> pb = pos_at(p_.disk[b.id]);
+        const T dx = pb.x - pi.x, dy = pb.y - pi.y;
+        const T sx = dx > half_lx_ ? -lx_ : dx < -half_lx_ ? lx_ : T(0);
+        const T sy = dy > half_ly_ ? -ly_ : dy < -half_ly_ ? ly_ : T(0);
+        consider_pair(i, pi, vi, b.id, sx, sy, best);
+      } else {
+        (void)i_big;
+        consider_pair(i, pi, vi, b.id, T(0), T(0), best);
       }
-      const T t = pair_time(di, pi, vi, dk, sx, sy);
-      if (t > best.time) return;
-      const Candidate<T> c{t, EventKind::Pair, k};
-      if (c.before(best)) best = c;
-    });
+    }
+  }
+
+  // Calls f(k, shift_x, shift_y) for every small disk within a big disk's reach.
+  template <class F>
+  void for_each_in_reach(const BigDisk& b, F&& f) const {
+    const std::int32_t cell = grid_.cell_of(b.id);
+    const std::int32_t cx = grid_.cell_x(cell), cy = grid_.cell_y(cell);
+    for (std::int32_t dy = -b.reach_y; dy <= b.reach_y; ++dy)
+      for (std::int32_t dx = -b.reach_x; dx <= b.reach_x; ++dx) visit_cell(b.id, cx + dx, cy + dy, f);
   }
 
   // Full prediction for disk i at now_: walls, pairs in the 3 x 3 cells, cell crossing.
@@ -361,8 +442,15 @@ class Engine final : public EngineApi<T> {
     const Position2<T> pi = pos_at(d), vi = vel_at(d);
     const std::int32_t cell = grid_.cell_of(i);
     const std::int32_t cx = grid_.cell_x(cell), cy = grid_.cell_y(cell);
-    for (std::int32_t dy = -1; dy <= 1; ++dy)
-      for (std::int32_t dx = -1; dx <= 1; ++dx) scan_cell(i, pi, vi, cx + dx, cy + dy, best);
+    std::int32_t reach_x = 1, reach_y = 1;
+    const bool big = !big_.empty() && is_big(d);
+    if (big) {
+      const BigDisk& b = big_entry(i);
+      reach_x = b.reach_x, reach_y = b.reach_y;
+    }
+    for (std::int32_t dy = -reach_y; dy <= reach_y; ++dy)
+      for (std::int32_t dx = -reach_x; dx <= reach_x; ++dx) scan_cell(i, pi, vi, cx + dx, cy + dy, best);
+    if (!big_.empty()) scan_big(i, pi, vi, big, best);
     Prediction& pr = pred_[i];
     pr.t_coll = best.time;
     pr.coll_kind = best.kind;
@@ -508,7 +596,8 @@ class Engine final : public EngineApi<T> {
 
   // Moves disk i into the neighbouring cell; at a periodic edge its stored position wraps by one box
   // length (a state change, so it is an event sinks see). Then only the three cells that became
-  // neighbours are searched: predictions against the others are still valid.
+  // neighbours (for a big disk, the strip of its reach block) and the big disks are searched:
+  // predictions against the others are still valid.
   void cross_cell(std::int32_t i, CrossDir dir, EventKind kind) {
     const std::int32_t cell = grid_.cell_of(i);
     std::int32_t cx = grid_.cell_x(cell), cy = grid_.cell_y(cell);
@@ -521,16 +610,25 @@ class Engine final : public EngineApi<T> {
       cx = (cx + grid_.nx()) % grid_.nx();
       cy = (cy + grid_.ny()) % grid_.ny();
     }
-    grid_.move(i, grid_.cell_at(cx, cy));
+    const bool big = !big_.empty() && is_big(p_.disk[i]);
+    std::int32_t reach_x = 1, reach_y = 1;
+    if (big) {
+      const BigDisk& b = big_entry(i);
+      reach_x = b.reach_x, reach_y = b.reach_y;
+      grid_.set_home(i, grid_.cell_at(cx, cy));
+    } else {
+      grid_.move(i, grid_.cell_at(cx, cy));
+    }
     ++counts_.by_kind[int(kind)];
 
     Prediction& pr = pred_[i];
     Candidate<T> best{pr.t_coll, pr.coll_kind, pr.partner};
     const Position2<T> pi = pos_at(p_.disk[i]), vi = vel_at(p_.disk[i]);
-    for (std::int32_t k = -1; k <= 1; ++k) {
-      if (step_x != 0) scan_cell(i, pi, vi, cx + step_x, cy + k, best);
-      else scan_cell(i, pi, vi, cx + k, cy + step_y, best);
-    }
+    if (step_x != 0)
+      for (std::int32_t k = -reach_y; k <= reach_y; ++k) scan_cell(i, pi, vi, cx + step_x * reach_x, cy + k, best);
+    else
+      for (std::int32_t k = -reach_x; k <= reach_x; ++k) scan_cell(i, pi, vi, cx + k, cy + step_y * reach_y, best);
+    if (!big_.empty()) scan_big(i, pi, vi, big, best);
     if (best.time != pr.t_coll || best.kind != pr.coll_kind || best.partner != pr.partner) {
       pr.t_coll = best.time;
       pr.coll_kind = best.kind;
@@ -673,6 +771,8 @@ class Engine final : public EngineApi<T> {
   std::size_t species_count_ = 1;
   bool uniform_pairs_ = true;
   T gx_ = 0, gy_ = 0;          // gravity (UniformGravity only)
+  std::vector<BigDisk> big_;   // disks outside the cell lists (big_disks.hpp), by id
+  T big_radius_ = kNever<T>;
   static constexpr const char* kWallName[4] = {"left", "right", "bottom", "top"};
   T b_noise2_ = 0;  // round-off floor of b, geometry.hpp
   T now_ = 0;

@@ -1,6 +1,7 @@
 // Choosing the cell grid for a box: see grid_shape_for in engine_core.hpp.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "engine_core.hpp"
 
@@ -15,7 +16,7 @@ constexpr double kCellMargin = 1e-6;
 GridShape grid_shape_for(double lx, double ly, double max_radius, std::size_t disks, bool periodic,
                          Algorithm algorithm) {
   const std::int32_t min_cells = periodic ? 3 : 1;
-  if (algorithm == Algorithm::AllPairs) return {min_cells, min_cells};  // every disk neighbours every other
+  if (algorithm == Algorithm::AllPairs) return {min_cells, min_cells, {}};  // every disk neighbours every other
   const double width = 2 * max_radius * (1 + kCellMargin);
   double nx = std::max(1.0, std::floor(lx / width));
   double ny = std::max(1.0, std::floor(ly / width));
@@ -34,7 +35,28 @@ GridShape grid_shape_for(double lx, double ly, double max_radius, std::size_t di
   nx = std::max(least, std::min(nx, std::floor(max_cells / ny)));
   nx = std::min(nx, 65536.0);
   ny = std::min(ny, 65536.0);
-  return {std::int32_t(nx), std::int32_t(ny)};
+  return {std::int32_t(nx), std::int32_t(ny), {}};
+}
+
+GridShape engine_grid_for(const InitialState& init, bool periodic, Algorithm algorithm) {
+  double max_radius = 0;
+  for (double r : init.radius) max_radius = std::max(max_radius, r);
+  const GridShape plain = grid_shape_for(init.lx, init.ly, max_radius, init.size(), periodic, algorithm);
+  if (algorithm == Algorithm::AllPairs) return plain;
+  const DiskSizeSplit split = split_disk_sizes(init.radius);
+  if (split.big_radius == std::numeric_limits<double>::infinity()) return plain;
+  GridShape shape = grid_shape_for(init.lx, init.ly, split.small_max_radius, init.size(), periodic, algorithm);
+  shape.split = split;
+  if (periodic) {
+    const double wx = init.lx / shape.nx, wy = init.ly / shape.ny;
+    for (double r : init.radius) {
+      if (r <= split.big_radius) continue;
+      if (2 * big_disk_reach(r, split.small_max_radius, wx) + 3 > shape.nx ||
+          2 * big_disk_reach(r, split.small_max_radius, wy) + 3 > shape.ny)
+        return plain;  // a big disk that spans a good part of a periodic box: one grid for all
+    }
+  }
+  return shape;
 }
 
 }  // namespace ede

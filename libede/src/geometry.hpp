@@ -104,7 +104,10 @@ inline T time_to_reach_accelerated(T s, T u, T a, T t_min = T(0)) {
     return t >= t_min ? t : (leaving_outside ? t_min : kNever<T>);
   }
   const T d = u * u - T(2) * a * s;
-  if (d < T(0)) return leaving_outside ? t_min : kNever<T>;  // the line is never reached again
+  // d < 0: the line is never reached again. d == 0 with a > 0: it is only touched (s >= 0 throughout), not
+  // crossed; counting the touch as a crossing sent a disk at rest exactly on a cell side back and forth
+  // between the two cells at one instant, forever (found with the projectile of a crater under gravity).
+  if (d < T(0) || (d == T(0) && a > T(0))) return leaving_outside ? t_min : kNever<T>;
   const T root = ede::sqrt(d);
   const T q = u < T(0) ? (-u + root) / T(2) : -(u + root) / T(2);  // q = -(u + sign(u) sqrt(d)) / 2
   const T r1 = q / (a / T(2));

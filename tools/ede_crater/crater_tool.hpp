@@ -44,6 +44,7 @@ using tools::exact;  // exact text of a double (17 significant digits)
 // The options of a measurement, as typed; shared by `measure` and `scan` (measure_options.cpp).
 struct MeasureOptions {
   std::string at;                // --at T: a time, read exactly in the log's scalar type
+  std::string before;            // --before T: the reference state's time (default: the log's start)
   double energy_fraction = 0.1;  // --energy-fraction F
   std::string bed_species;       // --bed-species NAME
   std::string threshold = "0.5r", bin_width = "2r", drop_threshold = "1r", link_gap = "2r";

@@ -43,9 +43,13 @@ void print_report(const Options& opt, const MeasuredLog& ml) {
   std::printf("bed               %zu disks: %s\n", m.bed.disks, m.bed.reason.c_str());
   std::printf("measured at       t = %s, after %llu events: %s\n", exact(m.time).c_str(),
               static_cast<unsigned long long>(m.events), m.when.c_str());
-  std::printf("energy            E/E0 = %s there (E0 = %s); the fraction %s is %s\n", brief(m.energy_fraction).c_str(),
-              brief(m.energy.initial_energy).c_str(), brief(m.energy.fraction).c_str(),
-              m.energy.reached ? ("reached at t = " + exact(m.energy.time)).c_str() : "never reached in this log");
+  if (m.before_time > 0) std::printf("compared with     the bed at t = %s (--before)\n", exact(m.before_time).c_str());
+  if (m.has_energy)
+    std::printf("energy            E/E0 = %s there (E0 = %s); the fraction %s is %s\n", brief(m.energy_fraction).c_str(),
+                brief(m.energy.initial_energy).c_str(), brief(m.energy.fraction).c_str(),
+                m.energy.reached ? ("reached at t = " + exact(m.energy.time)).c_str() : "never reached in this log");
+  else
+    std::printf("energy            no fraction under gravity (the kinetic energy changes between collisions)\n");
   std::printf("lengths           r_bed = %s (mean bed radius); %zu bins of width %s; link gap %s\n",
               brief(l.bed_radius).c_str(), l.bins, in_r(l.bin_width).c_str(),
               l.exclude_detached ? in_r(l.link_gap).c_str() : "none (--keep-detached)");
@@ -94,8 +98,12 @@ int run_measure(const Options& opt) {
   };
   if (!profile.empty()) {
     if (Status s = write_profile_csv(profile, ml.crater); !s) return cleanup(), fail(s.error().message);
-    if (Status s = write_energy_csv(energy, ml.crater); !s) return cleanup(), fail(s.error().message);
-    if (temp_dir.empty()) std::printf("wrote             %s (profiles), %s (energy curve)\n", profile.c_str(), energy.c_str());
+    if (!ml.crater.has_energy) energy = "-";  // no curve: the figure has the profiles only
+    if (ml.crater.has_energy)
+      if (Status s = write_energy_csv(energy, ml.crater); !s) return cleanup(), fail(s.error().message);
+    if (temp_dir.empty())
+      std::printf("wrote             %s (profiles)%s\n", profile.c_str(),
+                  ml.crater.has_energy ? (", " + energy + " (energy curve)").c_str() : "");
   }
   if (!opt.plot.empty()) {
     const CraterMeasurement& m = ml.crater;

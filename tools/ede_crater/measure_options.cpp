@@ -42,6 +42,9 @@ void add_measure_options(CLI::App& app, MeasureOptions& o) {
                                   "(default 0.1; the log's end if it never does)");
   fraction->check(CLI::Range(0.0, 1.0));
   at->excludes(fraction);
+  app.add_option("--before", o.before,
+                 "compare with the bed at this time instead of the start (under gravity: after the bed has "
+                 "settled, before the impact)");
   app.add_option("--bed-species", o.bed_species,
                  "the bed's species (default: 'bed', else every species of more than one disk)");
   app.add_option("--threshold", o.threshold,
@@ -92,6 +95,12 @@ Result<MeasuredLog> measure_log(const std::string& path, const MeasureOptions& o
         return Error{"--at '" + o.at + "' is not a time: give a number >= 0 (such as 0.25) or 'end'"};
       req.at_end = t.kind == tools::TimeText::End;
       if (!req.at_end) req.at = t.value;
+    }
+    if (!o.before.empty()) {
+      const tools::ReadTime<T> t = tools::read_time<T>(o.before);
+      if (t.kind != tools::TimeText::Number)
+        return Error{"--before '" + o.before + "' is not a time: give a number >= 0 (such as 0.4)"};
+      req.before = t.value;
     }
     return measure_crater<T>(reader, req);
   });

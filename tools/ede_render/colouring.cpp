@@ -57,17 +57,28 @@ void by_species(const Frame& f, const std::vector<bool>& marked, Colouring& c) {
   }
 }
 
+// Classes against the initial mean speed; when everything starts at rest (a bed and a projectile falling
+// under gravity) there is none, and the frame's own mean speed is the reference instead, said so.
 void by_speed(const Frame& f, Colouring& c) {
+  double reference = f.initial_mean_speed;
+  const bool from_start = reference > 0;
+  if (!from_start) {
+    double sum = 0;
+    for (double v : f.speed) sum += v;
+    reference = f.speed.empty() ? 0 : sum / double(f.speed.size());
+  }
   std::array<std::size_t, 3> n{};
   for (double v : f.speed) {
-    const SpeedClass k = speed_class(v, f.initial_mean_speed);
+    const SpeedClass k = speed_class(v, reference);
     c.fill.push_back(speed_colour(k));
     ++n[std::size_t(k)];
   }
-  const char* const names[] = {"slow  v < 0.5 v\u0304\u2080", "medium", "fast  v > 1.5 v\u0304\u2080"};
+  const std::string bar = from_start ? "v\u0304\u2080" : "v\u0304";
+  const std::string names[] = {"slow  v < 0.5 " + bar, "medium", "fast  v > 1.5 " + bar};
   for (std::size_t k = 0; k < 3; ++k)
-    c.legend.push_back({speed_colour(SpeedClass(k)), std::string(names[k]) + "  (" + std::to_string(n[k]) + ")"});
-  c.legend.push_back({Rgb{}, "v\u0304\u2080 = " + number(f.initial_mean_speed) + " (initial mean speed)",
+    c.legend.push_back({speed_colour(SpeedClass(k)), names[k] + "  (" + std::to_string(n[k]) + ")"});
+  c.legend.push_back({Rgb{}, bar + " = " + number(reference) +
+                                 (from_start ? " (initial mean speed)" : " (mean speed now: all at rest at t = 0)"),
                       LegendEntry::Swatch::None});
 }
 

@@ -3,7 +3,8 @@
 // Three colourings, each with its own legend:
 //   species       Okabe & Ito's colour-blind-safe palette in species order; legend: names and counts;
 //   speed         the GasLab classes against v̄0, the initial mean speed: slow (v < 0.5 v̄0) blue, medium
-//                 green, fast (v > 1.5 v̄0) vermilion (Okabe-Ito hues for GasLab's blue/green/red);
+//                 green, fast (v > 1.5 v̄0) vermilion (Okabe-Ito hues for GasLab's blue/green/red); if
+//                 every disk starts at rest, against the frame's own mean speed instead;
 //   displacement  distance from the initial position on a sequential map (pale yellow -> dark red,
 //                 ColorBrewer YlOrRd, readable in grey and with colour-vision deficiencies); a colour bar.
 //                 Its top is the 95th percentile of the unmarked disks' displacements: a few far-flung

@@ -52,10 +52,14 @@ def steps(rows, key):
 
 def plot_measure(a):
     profile = read_csv(a.profile)
-    energy = read_csv(a.energy)
-    fig, single = ede_style.figure(width=11, height=4.2)  # the shared style; two panels in its figure
-    single.remove()
-    left, right = fig.subplots(1, 2)
+    if a.energy == "-":  # no energy curve (a run under gravity): the profiles alone
+        fig, left = ede_style.figure()
+        right = None
+    else:
+        energy = read_csv(a.energy)
+        fig, single = ede_style.figure(width=11, height=4.2)  # the shared style; two panels in its figure
+        single.remove()
+        left, right = fig.subplots(1, 2)
     x, before = steps(profile, "h_before")
     _, after = steps(profile, "h_after")
     left.plot(x, before, color=INITIAL, linewidth=1.6, label="surface before")
@@ -68,6 +72,11 @@ def plot_measure(a):
     left.set_title("surface profile" + (" at t = %.4g" % a.time if a.time is not None else ""))
     left.legend(loc="lower left", fontsize=9)
 
+    if right is None:
+        if a.title:
+            left.set_title(a.title + ": " + left.get_title(), fontsize=11)
+        ede_style.save(fig, a.out)
+        return
     t = [number(r["t"]) for r in energy]
     f = [number(r["energy_fraction"]) for r in energy]
     right.step(t, f, where="post", color=COLOURS[0], linewidth=1.4, label="E(t) / E(0)")
@@ -121,7 +130,7 @@ def main():
     sub = p.add_subparsers(dest="mode", required=True)
     m = sub.add_parser("measure")
     m.add_argument("profile")
-    m.add_argument("energy")
+    m.add_argument("energy", help="the energy curve CSV, or - for none (runs under gravity)")
     m.add_argument("out")
     m.add_argument("--time", type=float)
     m.add_argument("--fraction", type=float)

@@ -166,6 +166,7 @@ template <class T>
 struct CraterRequest {
   std::optional<T> at;          // measure at this time (exact in T) instead of the energy criterion
   bool at_end = false;          // measure at the log's end instead of the energy criterion
+  std::optional<T> before;      // the reference ("before") state at this time instead of the log's start
   double energy_fraction = 0.1;  // otherwise: when this fraction of E0 remains, else at the log's end
   std::string bed_species;      // see select_bed
   CraterSettings settings;
@@ -178,9 +179,13 @@ struct CraterMeasurement {
   BedSelection bed;
   CraterTimeSource source = CraterTimeSource::EnergyFraction;
   double time = 0;              // when the "after" state is taken
+  double before_time = 0;       // when the "before" state is taken
   std::uint64_t events = 0;     // events applied in that state
-  double energy_fraction = 0;   // E / E0 of that state (full sum)
+  double energy_fraction = 0;   // E / E0 of that state (full sum); NaN under gravity
   std::string when;             // the choice of time in words
+  // Under gravity the kinetic energy changes between collisions (and a bed at rest under a falling
+  // projectile starts with none): no fraction, no curve; the time must be asked for.
+  bool has_energy = true;
   EnergyFractionCurve energy;
   CraterBox box;
   CraterReport report;

@@ -41,7 +41,8 @@ class TimeStepped {
   // third of the box in a periodic box.
   static Result<TimeStepped> create(const InitialState& initial, const TimeSteppedOptions& options);
 
-  // Steps of dt while they fit before t, then one shorter step to land on t exactly.
+  // Steps of dt while they fit before t, then one shorter step to land on t exactly (nothing when
+  // t <= time() or t is not finite).
   void run_until(double t);
 
   double time() const { return time_; }
@@ -58,14 +59,25 @@ class TimeStepped {
  private:
   TimeStepped() = default;
   void step(double dt);
+  void move(double dt);
+  void resolve_walls();
+  void wrap_all();
+  void build_cells();
+  void resolve_pairs();
+  void resolve_overlap(std::size_t i, std::size_t j, double dx, double dy);
 
   TimeSteppedOptions options_;
   double lx_ = 1, ly_ = 1, time_ = 0, largest_overlap_ = 0;
+  // time_ = anchor_time_ + whole_steps_ * dt: whole steps are counted, not summed, so run_until(1) with
+  // dt = 1e-3 takes 1000 steps and no sliver step made of the sum's round-off.
+  double anchor_time_ = 0;
+  std::uint64_t whole_steps_ = 0;
   std::vector<double> x_, y_, vx_, vy_, r_, m_;
   TimeSteppedCounts counts_;
   // Cell list, rebuilt every step: cell sizes at least one largest diameter.
   std::int32_t nx_ = 1, ny_ = 1;
-  std::vector<std::int32_t> cell_head_, next_in_cell_;
+  double cell_ix_ = 1, cell_iy_ = 1;  // cells per unit length
+  std::vector<std::int32_t> cell_head_, next_in_cell_, cell_x_, cell_y_;
 };
 
 }  // namespace ede
