@@ -223,7 +223,7 @@ TEST_CASE("__float128 and long double engines agree on the first events to long 
   // Both start from the same doubles (exact in either type). A first collision inherits position errors of
   // ~eps L (L = 1) through a contact distance 2r = 0.02: relative errors ~ eps L / 2r = 50 eps in the
   // normal, hence in the velocities; contact times t ~ 0.01 err by ~eps L / v, i.e. ~100 eps relative.
-  // Measured over five seeds: at most 18 eps (times) and 55 eps (velocities) in the first 20 events. Later
+  // Measured over seeds 1-5: at most 13 eps (times) and 55 eps (velocities) in the first 20 events. Later
   // the difference grows by the instability of the dynamics (about x10 per 100 events here) while the
   // sequence of events stays the same for the ~1100 events the sinks see in 5000.
   const InitialState s = lattice_gas(20, 0.01, 1.0, 1);
