@@ -1,9 +1,11 @@
 // ede-bench: the project's benchmarks (not timed tests). Subcommands:
 //   speed  events per second, ns and cycles per event, bytes per disk, against the all-pairs baseline.
 //   log    event log: bytes per event, zstd level, logging overhead, seek time and replay throughput.
+//   effects what each physical effect costs per event; specialized engines against the all-effects one.
 //   stress the hard cases run long (packing 0.8; restitution 0.5 with TC), every invariant checked.
 #include <CLI/CLI.hpp>
 
+#include "bench_effects.hpp"
 #include "bench_log.hpp"
 #include "bench_speed.hpp"
 #include "bench_stress.hpp"
@@ -46,7 +48,25 @@ int main(int argc, char** argv) {
   st->add_option("--out-dir", stress.out_dir, "where the logs go (default /tmp)");
   st->add_flag("--keep-logs", stress.keep_logs, "keep the logs");
 
+  ede::bench::EffectsOptions effects;
+  bool effects_quick = false;
+  CLI::App* ef = app.add_subcommand("effects", "cost per event of each effect; specialized vs all-effects engine");
+  ef->add_option("--scene", effects.scene, "the gas to switch effects on in (two species named a and b, walls)");
+  CLI::Option* effects_repeat =
+      ef->add_option("--repeat", effects.repeat, "interleaved rounds; medians are reported")->check(CLI::Range(1, 100));
+  CLI::Option* effects_events = ef->add_option("--events", effects.events, "engine events per run")
+                                    ->check(CLI::Range(std::uint64_t(1000), std::uint64_t(1) << 40));
+  ef->add_option("--csv", effects.csv_path, "also write the table as CSV");
+  ef->add_flag("--quick", effects_quick, "a smoke run (seconds): 1 round of 2e5 events");
+
   if (const auto stop = ede::tools::parse_command_line(app, argc, argv)) return *stop;
+  if (*ef) {
+    if (effects_quick) {
+      if (!effects_repeat->count()) effects.repeat = 1;
+      if (!effects_events->count()) effects.events = 200000;
+    }
+    return ede::bench::run_effects(effects);
+  }
   if (*st) return ede::bench::run_stress(stress);
   if (*s) return ede::bench::run_speed(speed);
   if (*l) {
