@@ -1,6 +1,7 @@
 // The engines for scalar type __float128 (GCC's libquadmath), built only where EDE_HAVE_FLOAT128 is set:
-// a fourth precision for the accuracy study (ede-bench accuracy), which runs it without a log. The log,
-// replay and the tools know float, double and long double only; scenes never ask for __float128.
+// a fourth precision for the accuracy study, chosen by a scene's engine.scalar = "float128" (ede-sim,
+// ede-bench speed). Such runs write no log: the log, replay and the analysis tools know float, double and
+// long double only.
 #include "engine_factory.hpp"
 
 namespace ede {
