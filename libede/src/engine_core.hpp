@@ -15,7 +15,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -32,6 +31,7 @@
 #include "predict_crossing.hpp"
 #include "predict_pair.hpp"
 #include "predict_wall.hpp"
+#include "scalar_math.hpp"
 
 namespace ede {
 
@@ -221,7 +221,7 @@ class Engine final : public EngineApi<T> {
     p_.disk.resize(n);
     p_.mass.resize(n);
     p_.species = init.species;
-    if constexpr (kTc) p_.last_collision.assign(n, -std::numeric_limits<T>::infinity());
+    if constexpr (kTc) p_.last_collision.assign(n, -scalar_limits<T>::infinity());
     for (std::size_t i = 0; i < n; ++i) {
       p_.disk[i] = Disk<T>{T(init.x[i]), T(init.y[i]), T(init.vx[i]), T(init.vy[i]), T(0), T(init.radius[i]),
                            -1, 0, -1, -1};
@@ -325,8 +325,8 @@ class Engine final : public EngineApi<T> {
       if (dx * dx + dy * dy > s * s * (T(1) + T(1e-6))) return false;
       const Position2<T> vi = vel_at(di), vk = vel_at(dk);
       const T b = dx * (vk.x - vi.x) + dy * (vk.y - vi.y);
-      const T speeds = std::abs(vi.x) + std::abs(vi.y) + std::abs(vk.x) + std::abs(vk.y);
-      return b >= -T(64) * std::numeric_limits<T>::epsilon() * s * speeds;
+      const T speeds = ede::abs(vi.x) + ede::abs(vi.y) + ede::abs(vk.x) + ede::abs(vk.y);
+      return b >= -T(64) * scalar_limits<T>::epsilon() * s * speeds;
     }
     return true;
   }

@@ -3,7 +3,8 @@
 // make_engine looks at the effects a scene uses (walls or periodic; elastic, inelastic, or inelastic with
 // the TC model) once, and returns the one Engine instantiation built for exactly that combination: an
 // elastic gas runs code in which restitution and TC do not exist. The virtual calls here happen per run()
-// call, never per event. The scalar type T (float, double, long double) is the caller's choice.
+// call, never per event. The scalar type T (float, double, long double) is the caller's choice; where the
+// library was built with EDE_HAVE_FLOAT128, __float128 too (engine only: the log and replay do not know it).
 #pragma once
 
 #include <cstdint>
