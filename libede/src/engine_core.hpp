@@ -700,12 +700,12 @@ class Engine final : public EngineApi<T> {
   // before anything goes wrong. Exact zero (a disk stopped dead by xi = 0) is fine: it is at rest.
   void note_if_too_slow(std::int32_t i) {
     const Disk<T>& d = p_.disk[i];
-    const T speed = std::max(std::abs(d.vx), std::abs(d.vy));
+    const T speed = std::max(ede::abs(d.vx), ede::abs(d.vy));
     if (speed == T(0) || !(speed < kSlowestSpeed) || too_slow_ >= 0) return;
     too_slow_ = i;
     too_slow_speed_ = double(speed);
   }
-  static inline const T kSlowestSpeed = std::sqrt(std::numeric_limits<T>::min() / std::numeric_limits<T>::epsilon());
+  static inline const T kSlowestSpeed = ede::sqrt(scalar_limits<T>::min() / scalar_limits<T>::epsilon());
 
   // Inelastic collapse shows as ever more events at one and the same time; past the limit we stop.
   void note_time(T t) {

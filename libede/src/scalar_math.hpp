@@ -38,6 +38,7 @@ template <>
 struct scalar_limits<__float128> {
   static constexpr __float128 epsilon() { return __float128(0x1p-112); }
   static constexpr __float128 infinity() { return __float128(std::numeric_limits<double>::infinity()); }
+  static __float128 min() { return ldexpq(__float128(1), -16382); }  // the smallest normal, 2^-16382
 };
 
 inline __float128 sqrt(__float128 x) { return sqrtq(x); }
