@@ -261,3 +261,44 @@ TEST_CASE("hard case: xi = 0 and small xi with TC complete the run", "[hard][ine
     CHECK(kinetic_energy(e->particles()) < e->initial_kinetic_energy());
   }
 }
+
+TEST_CASE("hard case: a gas cooling for ever ends when its speeds leave the scalar type's range", "[hard][inelastic]") {
+  // Regression (fuzz_engine): three disks with wall restitution 0.1 and no stop but an event count cooled
+  // to speeds ~1e-192, whose squares underflow; approaching pairs were no longer seen and disks overlapped.
+  // Now the first disk to leave a collision slower than sqrt(min / epsilon) ends the run, disks apart.
+  InitialState s = box();
+  s.add(0.3954, 0.1459, 0.5294, 0.4980, 0.04535, 3.04, 0);
+  s.add(0.5819, 0.1251, -0.2392, 1.0, 0.01849, 0.610, 0);
+  s.add(0.3299, 0.6350, 0.3647, 0.0980, 0.02398, 4.61, 0);
+  EngineOptions o;
+  o.boundary = BoundaryKind::Walls;
+  o.physics.restitution = 0.545;
+  o.physics.wall_restitution = 0.106;
+  o.physics.tc = 1.09e-4;
+  o.stop.events = 100000;
+  auto e = engine(s, o);
+  REQUIRE(e->run() == RunStatus::CameToRest);
+  INFO(e->stall_message());
+  CHECK(e->counts().events() < 3000);
+  CHECK(e->stall_message().find("below 1.00104e-146,") != std::string::npos);  // sqrt(2^-1022 / 2^-52) = 2^-485
+  CHECK(e->stall_message().find("Stop earlier with stop.energy_fraction or stop.time") != std::string::npos);
+  CHECK(e->check_invariants(1e-9) == "");
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const double v = std::hypot(e->particles().disk[i].vx, e->particles().disk[i].vy);
+    CHECK(v < 1e-140);  // every disk has cooled: not one slow disk in a moving gas
+  }
+}
+
+TEST_CASE("hard case: a disk stopped dead (xi = 0) is at rest, not too slow", "[hard][inelastic]") {
+  // Exact zero speeds are fine: the floor concerns speeds whose squares lose digits, not rest.
+  InitialState s = box();
+  s.add(0.5, 0.5, -1.0, 0.0, 0.05, 1.0, 0);
+  EngineOptions o;
+  o.boundary = BoundaryKind::Walls;
+  o.physics.restitution = 0.0;
+  o.physics.wall_restitution = 0.0;
+  o.stop.time = 5;
+  auto e = engine(s, o);
+  CHECK(e->run() == RunStatus::ReachedTime);
+  CHECK(e->particles().disk[0].vx == 0.0);
+}

@@ -253,7 +253,19 @@ TEST_CASE("scene loader: scalar names", "[scene]") {
   CHECK(scalar("long double") == ede::ScalarKind::LongDouble);
   CHECK(scalar("long_double") == ede::ScalarKind::LongDouble);
   CHECK(std::string(ede::to_string(ede::ScalarKind::LongDouble)) == "long double");
+  CHECK(std::string(ede::to_string(ede::ScalarKind::Float128)) == "float128");
   CHECK(std::string(ede::to_string(ede::BoundaryKind::Periodic)) == "periodic");
+}
+
+TEST_CASE("scene loader: float128 where the __float128 engine is built, a clear refusal elsewhere", "[scene]") {
+  const std::string text = kBase + "[engine]\nscalar = \"float128\"\n";
+#if EDE_HAVE_FLOAT128
+  CHECK(load(text).scalar == ede::ScalarKind::Float128);
+#else
+  const std::string msg = error_of(text);
+  CHECK_THAT(msg, Contains("engine.scalar"));
+  CHECK_THAT(msg, Contains("without the __float128 engine"));
+#endif
 }
 
 TEST_CASE("scene loader: TOML syntax errors give toml++'s line", "[scene][errors]") {

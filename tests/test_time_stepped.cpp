@@ -157,7 +157,7 @@ TEST_CASE("time-stepped: run_until takes whole steps, then one shorter step onto
   CHECK(t.y()[0] == Approx(5.75).margin(1e-14));
 }
 
-TEST_CASE("time-stepped: periodic positions stay inside the box (0 <= x < L), momentum is kept", "[time_stepped]") {
+TEST_CASE("time-stepped: periodic positions stay in 0 <= x < L, momentum is kept", "[time_stepped]") {
   const InitialState s = gas(3);
   TimeStepped t = stepped(s, 1e-3, BoundaryKind::Periodic);
   double px0 = 0, py0 = 0;

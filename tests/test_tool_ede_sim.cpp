@@ -81,6 +81,30 @@ TEST_CASE("ede-sim runs float and long double scenes", "[tool][ede-sim]") {
   }
 }
 
+TEST_CASE("ede-sim runs float128 scenes without a log, and refuses to log them", "[tool][ede-sim][float128]") {
+  const std::string scene = source_path("examples/gas.toml") + " --quiet --set engine.scalar=float128";
+#if EDE_HAVE_FLOAT128
+  const std::string csv = std::string(EDE_BINARY_DIR) + "/tests/final-state-float128.csv";
+  const ToolRun r = run_tool("ede-sim", scene + " --json --final-state " + csv, "float128");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(r.out.find("\"scalar\": \"float128\"") != std::string::npos);
+  CHECK(json_number(r.out, "collisions_per_particle") == Approx(50).margin(1e-6));
+  const auto rows = lines(read_file(csv));
+  REQUIRE(rows.size() > 1);
+  CHECK(rows[0] == "id,species,x,y,vx,vy,radius,mass");
+  CHECK(rows[1].size() > 4 * 30);  // 36 significant digits per number, not double's 17
+  const std::string log = std::string(EDE_BINARY_DIR) + "/tests/float128.ede";
+  const ToolRun logged = run_tool("ede-sim", scene + " -o " + log, "float128-log");
+  CHECK(logged.status == 1);
+  CHECK(logged.err.find("run without -o") != std::string::npos);
+#else
+  const ToolRun r = run_tool("ede-sim", scene, "float128");
+  CHECK(r.status == 1);
+  CHECK(r.err.find("without the __float128 engine") != std::string::npos);
+#endif
+}
+
 TEST_CASE("ede-sim rejects bad input with a clear message and a non-zero exit", "[tool][ede-sim]") {
   const std::string dir = std::string(EDE_BINARY_DIR) + "/tests/";
   SECTION("missing file") {

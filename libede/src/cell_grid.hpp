@@ -15,11 +15,11 @@
 #pragma once
 
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <vector>
 
 #include "ede/particles.hpp"
+#include "scalar_math.hpp"
 
 namespace ede {
 
@@ -95,7 +95,7 @@ class CellGrid {
 
  private:
   static std::int32_t index_of(T x, T width, std::int32_t n) {
-    const T f = std::floor(x / width);
+    const T f = ede::floor(x / width);
     if (!(f >= T(0))) return 0;  // also NaN
     if (f >= T(n - 1)) return n - 1;
     return static_cast<std::int32_t>(f);

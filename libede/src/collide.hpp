@@ -13,14 +13,14 @@
 // multiplication by 1.
 #pragma once
 
-#include <cmath>
+#include "scalar_math.hpp"
 
 namespace ede {
 
 // Applies a pair collision in place. `one_plus_xi` is 2 for an elastic collision.
 template <class T>
 inline void collide_pair(T dx, T dy, T mi, T mj, T one_plus_xi, T& vix, T& viy, T& vjx, T& vjy) {
-  const T dist = std::sqrt(dx * dx + dy * dy);
+  const T dist = ede::sqrt(dx * dx + dy * dy);
   const T nx = dx / dist;
   const T ny = dy / dist;
   const T vn = (vjx - vix) * nx + (vjy - viy) * ny;  // normal relative speed, < 0 when approaching

@@ -99,6 +99,7 @@ Result<EnergyFractionCurve> energy_fraction_curve(std::shared_ptr<const LogReade
     case ScalarKind::Float: return walk<float>(std::move(log), fraction, points);
     case ScalarKind::LongDouble: return walk<long double>(std::move(log), fraction, points);
     case ScalarKind::Double: break;
+    case ScalarKind::Float128: break;  // never in a log (LogHeaderInfo::scalar)
   }
   return walk<double>(std::move(log), fraction, points);
 }

@@ -15,7 +15,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -32,6 +31,7 @@
 #include "predict_crossing.hpp"
 #include "predict_pair.hpp"
 #include "predict_wall.hpp"
+#include "scalar_math.hpp"
 
 namespace ede {
 
@@ -221,7 +221,7 @@ class Engine final : public EngineApi<T> {
     p_.disk.resize(n);
     p_.mass.resize(n);
     p_.species = init.species;
-    if constexpr (kTc) p_.last_collision.assign(n, -std::numeric_limits<T>::infinity());
+    if constexpr (kTc) p_.last_collision.assign(n, -scalar_limits<T>::infinity());
     for (std::size_t i = 0; i < n; ++i) {
       p_.disk[i] = Disk<T>{T(init.x[i]), T(init.y[i]), T(init.vx[i]), T(init.vy[i]), T(0), T(init.radius[i]),
                            -1, 0, -1, -1};
@@ -325,8 +325,8 @@ class Engine final : public EngineApi<T> {
       if (dx * dx + dy * dy > s * s * (T(1) + T(1e-6))) return false;
       const Position2<T> vi = vel_at(di), vk = vel_at(dk);
       const T b = dx * (vk.x - vi.x) + dy * (vk.y - vi.y);
-      const T speeds = std::abs(vi.x) + std::abs(vi.y) + std::abs(vk.x) + std::abs(vk.y);
-      return b >= -T(64) * std::numeric_limits<T>::epsilon() * s * speeds;
+      const T speeds = ede::abs(vi.x) + ede::abs(vi.y) + ede::abs(vk.x) + ede::abs(vk.y);
+      return b >= -T(64) * scalar_limits<T>::epsilon() * s * speeds;
     }
     return true;
   }
@@ -555,7 +555,11 @@ class Engine final : public EngineApi<T> {
     T one_plus_xi = T(2);
     if constexpr (kInelastic) one_plus_xi = by_tc ? T(2) : pair_one_plus_xi(i, j);
     collide_pair(dx, dy, p_.mass[i], p_.mass[j], one_plus_xi, a.vx, a.vy, b.vx, b.vy);
-    if constexpr (kInelastic) ke_ += pair_energy(i, j) - ke_before;
+    if constexpr (kInelastic) {
+      ke_ += pair_energy(i, j) - ke_before;
+      note_if_too_slow(i);
+      note_if_too_slow(j);
+    }
     if constexpr (kTc) p_.last_collision[i] = p_.last_collision[j] = now_;
     ++a.counter;
     ++b.counter;
@@ -582,6 +586,7 @@ class Engine final : public EngineApi<T> {
       else
         collide_wall(vertical, xi_wall_[wall], d.vx, d.vy);
       ke_ += disk_energy(i) - ke_before;
+      note_if_too_slow(i);
     } else {
       collide_wall_elastic(vertical, d.vx, d.vy);
     }
@@ -687,6 +692,21 @@ class Engine final : public EngineApi<T> {
     return next_action_index_ < opt_.actions.size() ? T(opt_.actions[next_action_index_].time) : kNever<T>;
   }
 
+  // An inelastic run that cools for ever (a wall restitution of 0.1 divides a speed by 10 per bounce)
+  // reaches speeds whose squares leave T's normal range: below sqrt(min / epsilon) (~1e-146 in double,
+  // ~3e-16 in float) the products of the contact-time formula lose digits or underflow to zero, pairs
+  // approaching each other are no longer seen, and disks overlap (found by fuzz_engine: three disks
+  // after 3000 events at speeds ~1e-192). The first disk to leave a collision that slow ends the run,
+  // before anything goes wrong. Exact zero (a disk stopped dead by xi = 0) is fine: it is at rest.
+  void note_if_too_slow(std::int32_t i) {
+    const Disk<T>& d = p_.disk[i];
+    const T speed = std::max(ede::abs(d.vx), ede::abs(d.vy));
+    if (speed == T(0) || !(speed < kSlowestSpeed) || too_slow_ >= 0) return;
+    too_slow_ = i;
+    too_slow_speed_ = double(speed);
+  }
+  static inline const T kSlowestSpeed = ede::sqrt(scalar_limits<T>::min() / scalar_limits<T>::epsilon());
+
   // Inelastic collapse shows as ever more events at one and the same time; past the limit we stop.
   void note_time(T t) {
     if (t == now_) {
@@ -714,6 +734,18 @@ class Engine final : public EngineApi<T> {
       stall_message_ = m.str();
       return RunStatus::Stalled;
     }
+    if constexpr (kInelastic)
+      if (too_slow_ >= 0) {
+        std::ostringstream m;
+        m << "disk " << too_slow_ << " left a collision at t = " << double(now_) << " with speed "
+          << too_slow_speed_ << ", below " << double(kSlowestSpeed)
+          << ", the slowest speed whose square the scalar type holds to full precision: the run has cooled "
+             "to rest as far as it can tell (kinetic energy "
+          << kinetic_energy(p_) / ke0_ << " of the initial), and contact times would no longer be exact. Stop earlier with "
+             "stop.energy_fraction or stop.time.";
+        stall_message_ = m.str();
+        return RunStatus::CameToRest;
+      }
     if (opt_.stop.events && counts_.events() >= *opt_.stop.events) return RunStatus::ReachedEvents;
     if (opt_.stop.collisions_per_particle && counts_.of(EventKind::Pair) >= pairs_to_stop_)
       return RunStatus::ReachedCollisions;
@@ -783,6 +815,8 @@ class Engine final : public EngineApi<T> {
   std::size_t next_action_index_ = 0;
   std::uint64_t same_time_events_ = 0, stall_limit_ = 0;
   bool stalled_ = false;
+  std::int32_t too_slow_ = -1;  // the first disk to leave a collision too slow (note_if_too_slow), or -1
+  double too_slow_speed_ = 0;
   bool started_ = false;
   bool resumed_ = false;
   RunStatus status_ = RunStatus::Running;

@@ -27,6 +27,7 @@ const char* to_string(RunStatus s) {
     case RunStatus::ReachedEnergy: return "reached stop.energy_fraction";
     case RunStatus::NoMoreEvents: return "no more events (nothing will collide again)";
     case RunStatus::Stalled: return "stalled (inelastic collapse)";
+    case RunStatus::CameToRest: return "came to rest (speeds below what the scalar type resolves)";
   }
   return "?";
 }

@@ -16,10 +16,10 @@
 #pragma once
 
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 #include "ede/event.hpp"
+#include "scalar_math.hpp"
 
 namespace ede {
 
@@ -59,7 +59,7 @@ class EventQueue {
 
   void reset(std::uint32_t n) {
     blocks_ = n == 0 ? 1 : (n + kBlock - 1) / kBlock;
-    const QueueKey<T> never{std::numeric_limits<T>::infinity(), ~0u};
+    const QueueKey<T> never{scalar_limits<T>::infinity(), ~0u};
     keys_.assign(std::size_t(blocks_) * kBlock, never);  // padding keys never win against real ones
     for (std::uint32_t i = 0; i < n; ++i) keys_[i].tag = make_tag(EventKind::Pair, i);
     nodes_.assign(2 * std::size_t(blocks_) - 1, never);

@@ -15,13 +15,14 @@
 // sliding lets the pair overlap by at most ~eps * L over a free flight: below anything measurable.
 #pragma once
 
-#include <cmath>
-#include <limits>
+#include <algorithm>
+
+#include "scalar_math.hpp"
 
 namespace ede {
 
 template <class T>
-constexpr T kNever = std::numeric_limits<T>::infinity();
+constexpr T kNever = scalar_limits<T>::infinity();
 
 // Disks at relative position (dx, dy) = x_j - x_i and relative velocity (dvx, dvy) = v_j - v_i, touching
 // at distance s = r_i + r_j. Returns the time until contact, 0 if they overlap (by round-off) while
@@ -37,13 +38,13 @@ inline T pair_contact_time(T dx, T dy, T dvx, T dvy, T s, T b_noise2 = T(0)) {
   if (c <= 0) return T(0);  // in contact or overlapping and approaching: collide now
   const T d = b * b - a * c;
   if (!(d > 0)) return kNever<T>;  // the relative path misses (or grazes) the contact circle
-  return c / (-b + std::sqrt(d));
+  return c / (-b + ede::sqrt(d));
 }
 
 // The round-off floor for b in a box of largest side `length`: positions are exact to ~eps * length.
 template <class T>
 inline T b_noise2_for(T length) {
-  const T floor = T(8) * std::numeric_limits<T>::epsilon() * length;
+  const T floor = T(8) * scalar_limits<T>::epsilon() * length;
   return floor * floor;
 }
 
@@ -59,7 +60,7 @@ inline T pair_contact_time_textbook(T dx, T dy, T dvx, T dvy, T s, T b_noise2 = 
   if (c <= 0) return T(0);
   const T d = b * b - a * c;
   if (!(d > 0)) return kNever<T>;
-  const T t = (-b - std::sqrt(d)) / a;
+  const T t = (-b - ede::sqrt(d)) / a;
   return t > 0 ? t : T(0);
 }
 
@@ -107,7 +108,7 @@ inline T time_to_reach_accelerated(T s, T u, T a, T t_min = T(0)) {
   // crossed; counting the touch as a crossing sent a disk at rest exactly on a cell side back and forth
   // between the two cells at one instant, forever (found with the projectile of a crater under gravity).
   if (d < T(0) || (d == T(0) && a > T(0))) return leaving_outside ? t_min : kNever<T>;
-  const T root = std::sqrt(d);
+  const T root = ede::sqrt(d);
   const T q = u < T(0) ? (-u + root) / T(2) : -(u + root) / T(2);  // q = -(u + sign(u) sqrt(d)) / 2
   const T r1 = q / (a / T(2));
   const T r2 = q != T(0) ? s / q : r1;  // q == 0 only when u == 0 and d == 0: the double root 0

@@ -51,6 +51,7 @@ Result<std::string> log_content_digest(std::shared_ptr<const LogReader> log) {
     case ScalarKind::Float: return digest_as<float>(log);
     case ScalarKind::LongDouble: return digest_as<long double>(log);
     case ScalarKind::Double: break;
+    case ScalarKind::Float128: break;  // never in a log (LogHeaderInfo::scalar)
   }
   return digest_as<double>(log);
 }

@@ -21,6 +21,7 @@ decltype(auto) with_log_scalar(const LogReader& log, F&& f) {
     case ScalarKind::Float: return f.template operator()<float>();
     case ScalarKind::LongDouble: return f.template operator()<long double>();
     case ScalarKind::Double: break;
+    case ScalarKind::Float128: break;  // never in a log (LogHeaderInfo::scalar)
   }
   return f.template operator()<double>();
 }

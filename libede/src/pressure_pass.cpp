@@ -174,6 +174,7 @@ Result<LogDisks> log_disks(const std::shared_ptr<const LogReader>& log) {
     case ScalarKind::Float: return disks_of<float>(log);
     case ScalarKind::LongDouble: return disks_of<long double>(log);
     case ScalarKind::Double: break;
+    case ScalarKind::Float128: break;  // never in a log (LogHeaderInfo::scalar)
   }
   return disks_of<double>(log);
 }
@@ -185,6 +186,7 @@ Result<PressureBins> accumulate_pressure(const std::shared_ptr<const LogReader>&
     case ScalarKind::Float: return accumulate<float>(log, t0, t1, bins);
     case ScalarKind::LongDouble: return accumulate<long double>(log, t0, t1, bins);
     case ScalarKind::Double: break;
+    case ScalarKind::Float128: break;  // never in a log (LogHeaderInfo::scalar)
   }
   return accumulate<double>(log, t0, t1, bins);
 }

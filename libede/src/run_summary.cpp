@@ -42,7 +42,8 @@ template <class T>
 const char* scalar_name() {
   if constexpr (std::is_same_v<T, float>) return "float";
   if constexpr (std::is_same_v<T, double>) return "double";
-  return "long double";
+  if constexpr (std::is_same_v<T, long double>) return "long double";
+  return "float128";
 }
 
 }  // namespace
@@ -83,6 +84,9 @@ RunSummary summarize(const EngineApi<T>& engine, double momentum_initial_x, doub
 template RunSummary summarize<float>(const EngineApi<float>&, double, double);
 template RunSummary summarize<double>(const EngineApi<double>&, double, double);
 template RunSummary summarize<long double>(const EngineApi<long double>&, double, double);
+#if EDE_HAVE_FLOAT128
+template RunSummary summarize<__float128>(const EngineApi<__float128>&, double, double);
+#endif
 
 std::string to_text(const RunSummary& s) {
   std::ostringstream o;

@@ -100,11 +100,18 @@ PhysicsSpec read_physics(const Reader& top) {
 void read_engine(const Reader& top, Scene& scene) {
   const Reader e = top.section("engine");
   e.check_keys(sections::engine);
-  switch (e.choice("scalar", {"float", "double", "long double", "long_double"}).value_or(1)) {
+  switch (e.choice("scalar", {"float", "double", "long double", "long_double", "float128"}).value_or(1)) {
     case 0: scene.scalar = ScalarKind::Float; break;
     case 1: scene.scalar = ScalarKind::Double; break;
+    case 4: scene.scalar = ScalarKind::Float128; break;
     default: scene.scalar = ScalarKind::LongDouble; break;
   }
+#if !EDE_HAVE_FLOAT128
+  if (scene.scalar == ScalarKind::Float128)
+    e.fail("scalar", "this ede was built without the __float128 engine (EDE_FLOAT128 off, or a compiler without "
+                     "GCC's libquadmath, such as Clang)",
+           "use \"long double\", or build with GCC and -DEDE_FLOAT128=ON");
+#endif
   scene.rebuild_interval = static_cast<std::uint64_t>(e.integer("rebuild_interval", 0).value_or(0));
 }
 

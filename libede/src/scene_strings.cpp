@@ -19,6 +19,7 @@ const char* to_string(ScalarKind kind) {
     case ScalarKind::Float: return "float";
     case ScalarKind::Double: return "double";
     case ScalarKind::LongDouble: return "long double";
+    case ScalarKind::Float128: return "float128";
   }
   return "unknown";
 }

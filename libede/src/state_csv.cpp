@@ -4,6 +4,10 @@
 #include <cerrno>
 #include <cstring>
 
+#if EDE_HAVE_FLOAT128
+#include <quadmath.h>
+#endif
+
 namespace ede {
 
 namespace {
@@ -11,6 +15,13 @@ namespace {
 void put(std::FILE* out, float v) { std::fprintf(out, "%.9g", double(v)); }
 void put(std::FILE* out, double v) { std::fprintf(out, "%.17g", v); }
 void put(std::FILE* out, long double v) { std::fprintf(out, "%.21Lg", v); }
+#if EDE_HAVE_FLOAT128
+void put(std::FILE* out, __float128 v) {
+  char text[64];
+  quadmath_snprintf(text, sizeof text, "%.36Qg", v);
+  std::fputs(text, out);
+}
+#endif
 
 }  // namespace
 
@@ -54,5 +65,11 @@ template Status write_state_csv_file<double>(const std::string&, const Particles
                                              const std::vector<std::string>&);
 template Status write_state_csv_file<long double>(const std::string&, const Particles<long double>&, long double,
                                                   const std::vector<std::string>&);
+#if EDE_HAVE_FLOAT128
+template void write_state_csv<__float128>(std::FILE*, const Particles<__float128>&, __float128,
+                                          const std::vector<std::string>&);
+template Status write_state_csv_file<__float128>(const std::string&, const Particles<__float128>&, __float128,
+                                                 const std::vector<std::string>&);
+#endif
 
 }  // namespace ede

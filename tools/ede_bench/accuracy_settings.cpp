@@ -40,8 +40,9 @@ std::vector<Setting> study_settings() {
 }
 
 std::string scalar_override(Precision p) {
-  return p == Precision::Float ? "engine.scalar=float"
+  return p == Precision::Float        ? "engine.scalar=float"
          : p == Precision::LongDouble ? "engine.scalar=\"long double\""
+         : p == Precision::Float128   ? "engine.scalar=float128"
                                       : "engine.scalar=double";
 }
 

@@ -1,10 +1,11 @@
 // The accuracy settings of ede-bench accuracy and what every measurement of it shares: the scalar type
 // (float, double, long double, and __float128 where the build has it: EDE_HAVE_FLOAT128) and the pair
 // contact root (stable or textbook); loading a study scene with a setting applied; the energy summed in a
-// type at least as wide as the run's; one ulp up in the run's own type.
+// type at least as wide as the run's; one ulp up in the run's own type. The study keeps its own Precision
+// (not ScalarKind) so that every switch over it is here.
 // A setting is a (precision, contact) pair run through the same measurements, so the contact root is not
-// a measurement file of its own. Rejected: reading the scalar from the scene (ScalarKind has no
-// __float128, and a scene file should not name a study-only type).
+// a measurement file of its own. Rejected: a scene file per scalar type (the study applies every type
+// to the same file, by override).
 #pragma once
 
 #include <cmath>
@@ -51,7 +52,7 @@ decltype(auto) with_precision(Precision p, F&& f) {
   return f.template operator()<double>();
 }
 
-// The scene override that records p in a scene ("engine.scalar=float"; double for __float128).
+// The scene override that records p in a scene ("engine.scalar=float", ..., "engine.scalar=float128").
 std::string scalar_override(Precision p);
 
 // A scene ready to run with a setting: its stop condition is the caller's to set (options.stop).
@@ -60,8 +61,8 @@ struct StudyScene {
   InitialState initial;
   EngineOptions options;
 };
-// Loads `path` with `overrides`, records the setting's scalar type in the scene (for a log header; double
-// for __float128, which has no log) and sets the contact root.
+// Loads `path` with `overrides`, records the setting's scalar type in the scene (a log header names it; a
+// float128 run writes no log) and sets the contact root.
 Result<StudyScene> load_study_scene(const std::string& path, const Setting& setting,
                                     std::vector<std::string> overrides = {});
 

@@ -8,11 +8,16 @@
 // log at its last resumable keyframe and continues the run from there: the resumed log holds exactly the
 // events an uninterrupted run writes. Exit status: 0 when the run ended on a stop condition or ran out of
 // events, 3 when it stalled (inelastic collapse), 1 on bad input or an I/O error, 2 on a bad command line.
+// engine.scalar = "float128" (where built with EDE_HAVE_FLOAT128) runs the __float128 engine for the
+// accuracy study: the log format holds float, double and long double only, so such a run takes no -o (it
+// still prints its summary and writes --final-state with 36 significant digits).
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cstddef>
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "ede/engine.hpp"
@@ -84,29 +89,38 @@ ede::Result<Resumption<T>> prepare_resumption(const ede::LogReader& log) {
   return r;
 }
 
+// The log sink of a run in T: none for __float128, which the log format does not hold.
+template <class T>
+using LogFor = std::conditional_t<ede::tools::kLogScalar<T>, std::unique_ptr<ede::LogWriter<T>>, std::nullptr_t>;
+
 template <class T>
 int run(const Options& opt, const Prepared& prep, double setup_seconds) {
   const auto setup_start = std::chrono::steady_clock::now();
   const ede::Scene& scene = prep.scene;
   std::unique_ptr<Resumption<T>> resumption;
-  if (prep.resumed_log) {
-    auto r = prepare_resumption<T>(*prep.resumed_log);
-    if (!r) return fail(r.error().message);
-    resumption = std::make_unique<Resumption<T>>(std::move(r).value());
+  if constexpr (ede::tools::kLogScalar<T>) {
+    if (prep.resumed_log) {
+      auto r = prepare_resumption<T>(*prep.resumed_log);
+      if (!r) return fail(r.error().message);
+      resumption = std::make_unique<Resumption<T>>(std::move(r).value());
+    }
   }
   auto made = ede::make_engine<T>(prep.initial, prep.options, resumption ? &resumption->point : nullptr);
   if (!made) return fail(scene.source_name + ": " + made.error().message);
   ede::EngineApi<T>& engine = *made.value();
 
-  std::unique_ptr<ede::LogWriter<T>> log;
+  LogFor<T> log;
   const std::string log_path = prep.resumed_log ? opt.resume_path : opt.log_path;
-  if (!log_path.empty()) {
-    auto w = ede::LogWriter<T>::create(log_path, ede::LogRunInfo::from(scene, prep.options, prep.initial.species_names),
-                                       ede::LogSettings::from(scene.log),
-                                       resumption ? &resumption->continuation : nullptr);
-    if (!w) return fail(w.error().message);
-    log = std::move(w).value();
-    engine.add_sink(log.get());  // first, as DESIGN.md orders the sinks
+  if constexpr (ede::tools::kLogScalar<T>) {
+    if (!log_path.empty()) {
+      auto w = ede::LogWriter<T>::create(log_path,
+                                         ede::LogRunInfo::from(scene, prep.options, prep.initial.species_names),
+                                         ede::LogSettings::from(scene.log),
+                                         resumption ? &resumption->continuation : nullptr);
+      if (!w) return fail(w.error().message);
+      log = std::move(w).value();
+      engine.add_sink(log.get());  // first, as DESIGN.md orders the sinks
+    }
   }
 
   double px0 = 0, py0 = 0;
@@ -141,12 +155,14 @@ int run(const Options& opt, const Prepared& prep, double setup_seconds) {
     std::printf("%s\n", ede::to_json(summary).c_str());
   else
     std::printf("%s", ede::to_text(summary).c_str());
-  if (log) {
-    if (const std::string e = log->error(); !e.empty()) return fail("the event log is incomplete: " + e);
-    if (!opt.json)
-      std::printf("event log        %s: %llu events, %.4g MiB, %.3g bytes/event\n", log_path.c_str(),
-                  static_cast<unsigned long long>(log->events_logged()), double(log->bytes_written()) / 1048576,
-                  log->events_logged() ? double(log->bytes_written()) / double(log->events_logged()) : 0.0);
+  if constexpr (ede::tools::kLogScalar<T>) {
+    if (log) {
+      if (const std::string e = log->error(); !e.empty()) return fail("the event log is incomplete: " + e);
+      if (!opt.json)
+        std::printf("event log        %s: %llu events, %.4g MiB, %.3g bytes/event\n", log_path.c_str(),
+                    static_cast<unsigned long long>(log->events_logged()), double(log->bytes_written()) / 1048576,
+                    log->events_logged() ? double(log->bytes_written()) / double(log->events_logged()) : 0.0);
+    }
   }
   if (!opt.final_state_path.empty()) {
     if (auto s = ede::write_state_csv_file(opt.final_state_path, engine.particles(), engine.time(),
@@ -213,7 +229,10 @@ int main(int argc, char** argv) {
   auto prepared = opt.resume_path.empty() ? prepare_new(opt) : prepare_resume(opt.resume_path);
   if (!prepared) return fail(prepared.error().message);
   const double setup_seconds = seconds_since(start);
-  return ede::tools::with_scalar(prepared.value().scene.scalar, [&]<class T>() {
+  if (prepared.value().scene.scalar == ede::ScalarKind::Float128 && !opt.log_path.empty())
+    return fail("float128 runs are for the accuracy study and write no event log (the log format holds float, "
+                "double and long double): run without -o");
+  return ede::tools::with_engine_scalar(prepared.value().scene.scalar, [&]<class T>() {
     return run<T>(opt, prepared.value(), setup_seconds);
   });
 }

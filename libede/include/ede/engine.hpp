@@ -3,7 +3,8 @@
 // make_engine looks at the effects a scene uses (walls or periodic; elastic, inelastic, or inelastic with
 // the TC model) once, and returns the one Engine instantiation built for exactly that combination: an
 // elastic gas runs code in which restitution and TC do not exist. The virtual calls here happen per run()
-// call, never per event. The scalar type T (float, double, long double) is the caller's choice.
+// call, never per event. The scalar type T (float, double, long double) is the caller's choice; where the
+// library was built with EDE_HAVE_FLOAT128, __float128 too (engine only: the log and replay do not know it).
 #pragma once
 
 #include <cstdint>
@@ -100,7 +101,7 @@ class EngineApi {
   virtual const Particles<T>& particles() const = 0;
   virtual const EventCounts& counts() const = 0;
   virtual std::string effects() const = 0;        // e.g. "walls, inelastic (xi=0.5, xi_w=1), TC (tc=1e-4)"
-  virtual std::string stall_message() const = 0;  // why the run stalled, and what would fix it
+  virtual std::string stall_message() const = 0;  // why the run stalled or came to rest, and what to do
   virtual std::size_t memory_bytes() const = 0;   // bytes held by the engine's own arrays
   virtual double initial_kinetic_energy() const = 0;
   // Debug and test aid, O(N): pairs overlapping by more than `tolerance` of their contact distance and

@@ -21,7 +21,7 @@ namespace ede {
 struct LogHeaderInfo {
   std::uint32_t format_version = 0;
   std::string engine_version, compiler, compile_flags;
-  ScalarKind scalar = ScalarKind::Double;
+  ScalarKind scalar = ScalarKind::Double;  // Float, Double or LongDouble: a log never holds Float128
   std::uint64_t seed = 0;
   std::string scene_name, scene_text;
   std::uint32_t disks = 0;

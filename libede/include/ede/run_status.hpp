@@ -11,6 +11,7 @@ enum class RunStatus {
   ReachedEnergy,      // kinetic energy fell to stop.energy_fraction of the initial
   NoMoreEvents,       // nothing will ever happen again (every disk at rest, or moving freely forever)
   Stalled,            // time stopped advancing: inelastic collapse; see stall_message()
+  CameToRest,         // an inelastic run cooled below the speeds T resolves; see stall_message()
 };
 const char* to_string(RunStatus);
 bool is_finished(RunStatus);

@@ -15,7 +15,10 @@
 namespace ede {
 
 enum class BoundaryKind { Walls, Periodic };
-enum class ScalarKind { Float, Double, LongDouble };
+// The engine's scalar type. Float128 is __float128 (GCC's libquadmath), only where the library was built with
+// EDE_HAVE_FLOAT128, and for the engine only: a log holds one of the other three. Append only: a log's
+// content digest hashes the value.
+enum class ScalarKind { Float, Double, LongDouble, Float128 };
 
 struct Region {  // axis-aligned rectangle [x0, x1] x [y0, y1]
   double x0 = 0, y0 = 0, x1 = 1, y1 = 1;
