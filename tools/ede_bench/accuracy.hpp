@@ -16,7 +16,7 @@ struct AccuracyOptions {
   std::string scenes_dir = "examples/accuracy";
   std::uint64_t events = 10000000;               // engine events of the drift and overlap runs
   std::uint64_t timing_events = 2000000;         // engine events of each timed run
-  int repeat = 3;
+  int repeat = 5;
   bool quick = false;                            // a smoke run of well under a minute (tests)
   bool plot = true;
   std::string tmp_dir = "/tmp/ede-bench-accuracy";

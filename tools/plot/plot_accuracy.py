@@ -6,7 +6,7 @@ largest overlap, the time-reversal error and the collisions per disk until runs 
 Colour: the scalar type; filled: stable contact root, open: textbook root; marker: the scene. Zeros (no
 overlap seen) are drawn on the lower edge as triangles, twins that had not parted by the cap as arrows. Bottom middle: the time-stepped simulation, CPU
 seconds against its errors, one point per dt (labelled in mean free times), with the event-driven
-engine's cost and the noise floor (the event-driven engine on another seed of the same gas). Bottom right: the log's keyframe interval, bytes per event
+engine's cost and the spread between samples (the event-driven engine on another seed of the same gas). Bottom right: the log's keyframe interval, bytes per event
 against the time to seek to a state.
 """
 import csv
@@ -103,7 +103,7 @@ def stepped_panel(ax, stepped):
             ax.axhline(max(number(other[0][key]), 1e-6), color=c, linestyle="--", linewidth=1)
     ax.plot([], [], ":", color="grey", label="event-driven CPU time")
     if other:
-        ax.plot([], [], "--", color="grey", label="noise floor: event-driven, other seed")
+        ax.plot([], [], "--", color="grey", label="event-driven on another seed (sample spread)")
     log_axes(ax)
     ax.set_xlabel("CPU seconds (same simulated time)")
     ax.set_ylabel("relative error vs event-driven")
