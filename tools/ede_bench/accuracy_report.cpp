@@ -143,8 +143,8 @@ void stepped_table(std::ostringstream& o, const SteppedStudy& st) {
   o << "\ntau = " << fmt(st.tau) << " (mean free time of the gas), d = " << fmt(st.diameter) << ", v_rms = "
     << fmt(st.v_rms) << "; runs to " << fmt(st.span) << " (gas) and " << fmt(st.cooling_span)
     << " (cooling, where the event-driven E/E0 = " << fmt(st.energy_end)
-    << "). \"Other seed\": the event-driven engine on another sample of the same gas, the noise floor of both "
-       "errors. The event-driven rate's own standard error (10 blocks): "
+    << "). \"Other seed\": the event-driven engine on another sample of the same gas, how much the rate and "
+       "the cooling curve differ between samples. The event-driven rate's own standard error (10 blocks): "
     << fmt(st.rate_stderr, 2) << ". Largest overlap: time-stepped, every overlap found before resolution; "
        "event-driven, all near pairs at 10 samples.\n\n";
 }

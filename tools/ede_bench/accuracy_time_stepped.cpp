@@ -9,10 +9,12 @@
 // dt is given in mean free times tau (time per collision per disk, from a probe run of each gas), and as
 // v_rms dt / d, the distance a disk moves in one step in diameters, which sets the error. Times are CPU
 // seconds of the run's thread (getrusage), medians over repeats, each run in its own child; the ratios
-// are to the event-driven runs of the same study. The noise floor is the event-driven engine itself from
-// another seed (another sample of the same gas): its "errors" are what no dt can go below, since the
-// time-stepped run's trajectory parts from the event-driven one within a few collisions. The event-driven
-// rate's own noise is also shown by 10 blocks of its run (standard error of the block rates).
+// are to the event-driven runs of the same study. The event-driven engine also runs from another seed
+// (another sample of the same gas): its "errors" are how much the rate and the cooling curve differ
+// between samples. The collision rate over 300 tau forgets the start, so that is its floor; the cooling
+// curve over 20 tau does not (the time-stepped run starts from the reference's own state and can come
+// closer). The event-driven rate's own noise is also shown by 10 blocks of its run (standard error of
+// the block rates).
 // Rejected: comparing with Enskog's collision rate (its error at these densities is larger than the
 // differences we want to show).
 #include <cmath>
@@ -186,7 +188,7 @@ SteppedStudy measure_time_stepped(const StudyPlan& plan) {
   const int points = plan.cooling_points;
   std::fprintf(stderr, "  time-stepped: tau %.4g, span %.4g; cooling span %.4g\n", st.tau, st.span, st.cooling_span);
 
-  // The event-driven runs: the reference, then the same gases from another seed (the noise floor).
+  // The event-driven runs: the reference, then the same gases from another seed (the spread between samples).
   const auto event_driven = [&](const std::string& method, const std::vector<std::string>& overrides) {
     SteppedRow row;
     row.method = method;
