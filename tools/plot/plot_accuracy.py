@@ -75,7 +75,7 @@ def legend(ax, engine):
     handles = []
     for p in PRECISIONS:
         if any(r["precision"] == p for r in engine):
-            handles.append(ax.plot([], [], "o", color=colour(p), label=p.replace("_", " "))[0])
+            handles.append(ax.plot([], [], "o", color=colour(p), label=p.replace("long_double", "long double").lstrip("_"))[0])
     handles.append(ax.plot([], [], "o", color="grey", markerfacecolor="none", label="textbook root")[0])
     for scene, m in MARKERS.items():
         if any(r["scene"] == scene for r in engine):
