@@ -204,8 +204,11 @@ SteppedStudy measure_time_stepped(const StudyPlan& plan) {
     row.energy_drift = std::fabs(get(g.values, "energy_" + std::to_string(kBlocks - 1)) - 1);
     return std::make_pair(row, std::make_pair(g.values, c.values));
   };
-  const auto [ref, ref_values] = event_driven("event-driven", {});
-  const auto& [ed, ed_cool] = ref_values;
+  // Named variables, not structured bindings: Clang 14 (Debian 12) cannot capture bindings in a lambda.
+  const auto reference = event_driven("event-driven", {});
+  const SteppedRow& ref = reference.first;
+  const KeyValues& ed = reference.second.first;
+  const KeyValues& ed_cool = reference.second.second;
   st.rows.push_back(ref);
   if (!ref.failure.empty()) return st;
   st.rows.back().cpu_ratio = 1, st.rows.back().cooling_cpu_ratio = 1;
