@@ -705,9 +705,7 @@ class Engine final : public EngineApi<T> {
     if constexpr (kGravity) return;
     const Disk<T>& d = p_.disk[i];
     const T speed = std::max(ede::abs(d.vx), ede::abs(d.vy));
-    if (speed == T(0) || !(speed < kSlowestSpeed) || too_slow_ >= 0) return;
-    too_slow_ = i;
-    too_slow_speed_ = double(speed);
+    if (speed != T(0) && speed < kSlowestSpeed && too_slow_ < 0) too_slow_ = i;
   }
   static inline const T kSlowestSpeed = ede::sqrt(scalar_limits<T>::min() / scalar_limits<T>::epsilon());
 
@@ -740,12 +738,14 @@ class Engine final : public EngineApi<T> {
     }
     if constexpr (kInelastic)
       if (too_slow_ >= 0) {
+        const Disk<T>& slow = p_.disk[too_slow_];  // its velocity is the one it left the collision with
         std::ostringstream m;
         m << "disk " << too_slow_ << " left a collision at t = " << double(now_) << " with speed "
-          << too_slow_speed_ << ", below " << double(kSlowestSpeed)
+          << double(std::max(ede::abs(slow.vx), ede::abs(slow.vy))) << ", below " << double(kSlowestSpeed)
           << ", the slowest speed whose square the scalar type holds to full precision: the run has cooled "
              "to rest as far as it can tell (kinetic energy "
-          << kinetic_energy(p_) / ke0_ << " of the initial), and contact times would no longer be exact. Stop earlier with "
+          << kinetic_energy(p_) / ke0_
+          << " of the initial), and contact times would no longer be exact. Stop earlier with "
              "stop.energy_fraction or stop.time.";
         stall_message_ = m.str();
         return RunStatus::CameToRest;
@@ -820,7 +820,6 @@ class Engine final : public EngineApi<T> {
   std::uint64_t same_time_events_ = 0, stall_limit_ = 0;
   bool stalled_ = false;
   std::int32_t too_slow_ = -1;  // the first disk to leave a collision too slow (note_if_too_slow), or -1
-  double too_slow_speed_ = 0;
   bool started_ = false;
   bool resumed_ = false;
   RunStatus status_ = RunStatus::Running;

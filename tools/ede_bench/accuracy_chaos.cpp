@@ -126,15 +126,6 @@ int divergence_child(const StudyScene& s, const StudyPlan& plan, std::string& ou
   return 0;
 }
 
-template <class Body>
-ChildMeasurement in_child(const StudyPlan& plan, const EngineRow& row, Body body) {
-  return run_child_measurement([&](std::string& out) {
-    auto s = load_study_scene(plan.scene(row.scene), row.setting);
-    if (!s) return out = s.error().message, 1;
-    return with_precision(row.setting.precision, [&]<class T>() { return body.template operator()<T>(s.value(), out); });
-  });
-}
-
 }  // namespace
 
 void measure_chaos(const StudyPlan& plan, EngineRow& row) {

@@ -112,16 +112,6 @@ int timed_child(const StudyScene& s, const StudyPlan& plan, std::string& out) {
   return 0;
 }
 
-template <class Body>
-ChildMeasurement in_child(const StudyPlan& plan, const EngineRow& row, Body body) {
-  return run_child_measurement([&](std::string& out) {
-    auto s = load_study_scene(plan.scene(row.scene), row.setting);
-    if (!s) return out = s.error().message, 1;
-    return with_precision(row.setting.precision,
-                          [&]<class T>() { return body.template operator()<T>(s.value(), out); });
-  });
-}
-
 void measure_log_bytes(const StudyPlan& plan, EngineRow& row) {
   if (!has_log(row.setting.precision)) return;
   RunConfig c;

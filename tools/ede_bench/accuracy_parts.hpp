@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "accuracy_settings.hpp"
+#include "bench_common.hpp"
 
 namespace ede::bench {
 
@@ -60,6 +61,18 @@ struct EngineRow {
   // ulp apart; -1: not within divergence_cap.
   double free_path = 0, divergence_path = -1, divergence_diameter = -1;
 };
+
+// Runs body.template operator()<T>(scene, out) in a child process, with the row's scene loaded for its
+// setting and T its precision: the shape of every per-row measurement of the engine study.
+template <class Body>
+ChildMeasurement in_child(const StudyPlan& plan, const EngineRow& row, Body body) {
+  return run_child_measurement([&](std::string& out) {
+    auto s = load_study_scene(plan.scene(row.scene), row.setting);
+    if (!s) return out = s.error().message, 1;
+    return with_precision(row.setting.precision,
+                          [&]<class T>() { return body.template operator()<T>(s.value(), out); });
+  });
+}
 
 // The error run (drift, overlap), then one run with the log on (bytes per event).
 void measure_engine_errors(const StudyPlan& plan, EngineRow& row);

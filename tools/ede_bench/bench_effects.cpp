@@ -122,10 +122,6 @@ double ns_per_event(const ChildMeasurement& m) {
 double cycles_per_event(const ChildMeasurement& m) {
   return get(m.values, "events") > 0 ? get(m.values, "cycles") / get(m.values, "events") : 0;
 }
-// The figure ratios are taken on: user-mode cycles when perf events are available (the other jobs of a
-// shared machine disturb them much less than wall time), else wall time.
-bool g_use_cycles = false;
-double cost_per_event(const ChildMeasurement& m) { return g_use_cycles ? cycles_per_event(m) : ns_per_event(m); }
 
 // Per configuration: one measurement per round of each engine kind.
 struct Series {
@@ -164,7 +160,12 @@ int run_effects(const EffectsOptions& o) {
     effects.push_back(made.value()->effects());
   }
 
-  g_use_cycles = tools::CpuCycles().available();
+  // Ratios are taken on user-mode cycles when perf events are available (the other jobs of a shared
+  // machine disturb them much less than wall time), else on wall time.
+  const bool use_cycles = tools::CpuCycles().available();
+  const auto cost_per_event = [&](const ChildMeasurement& m) {
+    return use_cycles ? cycles_per_event(m) : ns_per_event(m);
+  };
   std::vector<Series> series(configs.size());
   std::vector<ChildMeasurement> elastic_only;
   // A warm-up run, not counted: the first child of a session runs on a cold cache and a slow clock.
@@ -192,7 +193,7 @@ int run_effects(const EffectsOptions& o) {
   std::printf("Scene %s (%zu disks), %llu events per run, %d rounds; ns/event medians over rounds, ratios "
               "per round then median (min-max over rounds in brackets), on %s.\n\n",
               o.scene.c_str(), disks, static_cast<unsigned long long>(o.events), o.repeat,
-              g_use_cycles ? "user-mode cycles per event" : "wall time per event (no perf events here)");
+              use_cycles ? "user-mode cycles per event" : "wall time per event (no perf events here)");
   std::printf("| effects switched on | engine (ede-sim's effects line) | ns/event | cycles/event | vs elastic | "
               "all-effects engine ns/event | all-effects / specialized |\n");
   std::printf("|---|---|---:|---:|---:|---:|---:|\n");

@@ -17,6 +17,7 @@
 #include "ede/scene_loader.hpp"
 #include "ede/setup.hpp"
 #include "scalar_dispatch.hpp"
+#include "timed_run.hpp"
 
 namespace ede::bench {
 
@@ -45,18 +46,9 @@ int measure_in_child(const std::string& path, std::uint64_t events, Algorithm al
   return tools::with_engine_scalar(scene.value().scalar, [&]<class T>() {
     auto made = make_engine<T>(initial.value(), options);
     if (!made) return out = made.error().message, 1;
-    tools::CpuCycles cycles;
-    cycles.start();
-    const auto start = std::chrono::steady_clock::now();
-    made.value()->run();
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const std::uint64_t cyc = cycles.stop();
-    const EventCounts& c = made.value()->counts();
     std::ostringstream o;
     o.precision(17);
-    o << "events=" << c.events() << " collisions=" << c.collisions() << " wall=" << wall << " cycles=" << cyc
-      << " engine_bytes=" << made.value()->memory_bytes() << " disks=" << initial.value().size()
-      << " setup=" << setup;
+    o << tools::timed_run_report(*made.value()) << " disks=" << initial.value().size() << " setup=" << setup;
     out = o.str();
     return 0;
   });
