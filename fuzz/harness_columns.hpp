@@ -16,7 +16,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "chunk_codec.hpp"
+#include "log/chunk_codec.hpp"
 
 namespace ede::fuzz {
 

@@ -21,10 +21,10 @@
 #include <cstring>
 #include <string>
 
-#include "ede/engine.hpp"
-#include "ede/log_reader.hpp"
-#include "ede/log_writer.hpp"
-#include "ede/replay.hpp"
+#include "engine/engine.hpp"
+#include "log/log_reader.hpp"
+#include "log/log_writer.hpp"
+#include "replay/replay.hpp"
 
 namespace ede::fuzz {
 

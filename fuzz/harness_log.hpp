@@ -14,9 +14,9 @@
 #include <cstdint>
 #include <string>
 
-#include "ede/log_digest.hpp"
-#include "ede/log_reader.hpp"
-#include "ede/replay.hpp"
+#include "replay/log_digest.hpp"
+#include "log/log_reader.hpp"
+#include "replay/replay.hpp"
 
 namespace ede::fuzz {
 

@@ -12,8 +12,8 @@
 #include <set>
 #include <vector>
 
-#include "event_queue.hpp"
-#include "geometry.hpp"
+#include "engine/event_queue.hpp"
+#include "core/geometry.hpp"
 
 namespace ede::fuzz {
 

@@ -11,9 +11,9 @@
 #include <cstdint>
 #include <string>
 
-#include "ede/engine.hpp"
-#include "ede/scene_loader.hpp"
-#include "ede/setup.hpp"
+#include "engine/engine.hpp"
+#include "scene/scene_loader.hpp"
+#include "setup/setup.hpp"
 
 namespace ede::fuzz {
 

@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "ede/log_reader.hpp"
+#include "log/log_reader.hpp"
 
 namespace ede::tools {
 

@@ -9,7 +9,7 @@
 #include <cstring>
 #include <string>
 
-#include "ede/result.hpp"
+#include "ede/error.hpp"
 
 namespace ede::tools {
 

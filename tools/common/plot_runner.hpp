@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "ede/result.hpp"
+#include "ede/error.hpp"
 
 namespace ede::tools {
 

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-#include "ede/engine.hpp"
+#include "engine/engine.hpp"
 #include "ede/scene.hpp"
 
 namespace ede::tools {

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "accuracy_parts.hpp"
-#include "ede/result.hpp"
+#include "ede/error.hpp"
 
 namespace ede::bench {
 

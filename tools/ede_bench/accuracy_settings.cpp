@@ -1,8 +1,8 @@
 // The accuracy study's settings and scene loading; see accuracy_settings.hpp.
 #include "accuracy_settings.hpp"
 
-#include "ede/scene_loader.hpp"
-#include "ede/setup.hpp"
+#include "scene/scene_loader.hpp"
+#include "setup/setup.hpp"
 
 namespace ede::bench {
 

@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "ede/engine.hpp"
-#include "ede/particles.hpp"
-#include "ede/result.hpp"
+#include "engine/engine.hpp"
+#include "core/particles.hpp"
+#include "ede/error.hpp"
 #include "ede/scene.hpp"
 
 namespace ede::bench {

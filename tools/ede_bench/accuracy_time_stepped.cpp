@@ -25,7 +25,7 @@
 #include "bench_common.hpp"
 #include "log_measure.hpp"
 
-#include "ede/time_stepped.hpp"
+#include "study/time_stepped.hpp"
 
 namespace ede::bench {
 

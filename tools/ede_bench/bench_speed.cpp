@@ -13,9 +13,9 @@
 
 #include "bench_common.hpp"
 #include "cpu_cycles.hpp"
-#include "ede/engine.hpp"
-#include "ede/scene_loader.hpp"
-#include "ede/setup.hpp"
+#include "engine/engine.hpp"
+#include "scene/scene_loader.hpp"
+#include "setup/setup.hpp"
 #include "scalar_dispatch.hpp"
 #include "timed_run.hpp"
 

@@ -18,12 +18,12 @@
 #include <string>
 
 #include "bench_common.hpp"
-#include "ede/engine.hpp"
-#include "ede/log_reader.hpp"
-#include "ede/log_writer.hpp"
-#include "ede/replay.hpp"
-#include "ede/scene_loader.hpp"
-#include "ede/setup.hpp"
+#include "engine/engine.hpp"
+#include "log/log_reader.hpp"
+#include "log/log_writer.hpp"
+#include "replay/replay.hpp"
+#include "scene/scene_loader.hpp"
+#include "setup/setup.hpp"
 
 namespace ede::bench {
 

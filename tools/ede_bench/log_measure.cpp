@@ -16,10 +16,10 @@
 
 #include "bench_common.hpp"
 #include "cpu_cycles.hpp"
-#include "ede/log_reader.hpp"
-#include "ede/replay.hpp"
-#include "ede/scene_loader.hpp"
-#include "ede/setup.hpp"
+#include "log/log_reader.hpp"
+#include "replay/replay.hpp"
+#include "scene/scene_loader.hpp"
+#include "setup/setup.hpp"
 #include "scalar_dispatch.hpp"
 
 namespace ede::bench {

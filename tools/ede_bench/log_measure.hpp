@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "ede/engine.hpp"
-#include "ede/log_column_sizes.hpp"
-#include "ede/log_writer.hpp"
+#include "engine/engine.hpp"
+#include "log/log_column_sizes.hpp"
+#include "log/log_writer.hpp"
 
 namespace ede::bench {
 

@@ -10,9 +10,9 @@
 #include <cstdlib>
 #include <string>
 
-#include "ede/scene_loader.hpp"
-#include "ede/setup.hpp"
-#include "engine_factory.hpp"
+#include "scene/scene_loader.hpp"
+#include "setup/setup.hpp"
+#include "engine/engine_factory.hpp"
 #include "timed_run.hpp"
 
 namespace {

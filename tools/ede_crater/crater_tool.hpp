@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "ede/crater.hpp"
+#include "analysis/crater.hpp"
 #include "report_error.hpp"
-#include "ede/result.hpp"
+#include "ede/error.hpp"
 #include "exact_text.hpp"
 
 namespace ede::crater_tool {

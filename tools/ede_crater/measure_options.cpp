@@ -11,7 +11,7 @@
 
 #include "crater_tool.hpp"
 #include "open_log.hpp"
-#include "ede/log_reader.hpp"
+#include "log/log_reader.hpp"
 #include "scalar_dispatch.hpp"
 
 namespace ede::crater_tool {

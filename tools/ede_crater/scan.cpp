@@ -21,7 +21,7 @@
 #include <set>
 
 #include "crater_tool.hpp"
-#include "ede/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 #include "plot_runner.hpp"
 
 namespace ede::crater_tool {

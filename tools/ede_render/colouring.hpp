@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "ede/result.hpp"
+#include "ede/error.hpp"
 #include "log_states.hpp"
 #include "render.hpp"
 

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "colouring.hpp"
-#include "ede/result.hpp"
+#include "ede/error.hpp"
 #include "log_states.hpp"
 #include "render.hpp"
 

@@ -12,7 +12,7 @@
 #include <optional>
 #include <string>
 
-#include "ede/result.hpp"
+#include "ede/error.hpp"
 
 namespace ede::render {
 

@@ -10,8 +10,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ede/log_reader.hpp"
-#include "ede/replay.hpp"
+#include "log/log_reader.hpp"
+#include "replay/replay.hpp"
 #include "exact_text.hpp"
 #include "scalar_dispatch.hpp"
 

@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "ede/log_digest.hpp"
-#include "ede/log_stats.hpp"
+#include "replay/log_digest.hpp"
+#include "log/log_stats.hpp"
 #include "replay_tool.hpp"
-#include "scalar_bytes.hpp"
+#include "log/scalar_bytes.hpp"
 
 namespace ede::replay_tool {
 

@@ -13,11 +13,11 @@
 #include <optional>
 #include <string>
 
-#include "ede/event.hpp"
+#include "core/event.hpp"
 #include "open_log.hpp"
 #include "report_error.hpp"
-#include "ede/log_reader.hpp"
-#include "ede/replay.hpp"
+#include "log/log_reader.hpp"
+#include "replay/replay.hpp"
 #include "exact_text.hpp"
 #include "output_file.hpp"
 #include "scalar_dispatch.hpp"

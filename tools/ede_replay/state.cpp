@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "ede/state_csv.hpp"
+#include "core/state_csv.hpp"
 #include "replay_tool.hpp"
 
 namespace ede::replay_tool {

@@ -12,9 +12,9 @@
 #include <memory>
 #include <string>
 
-#include "ede/engine.hpp"
-#include "ede/scene_loader.hpp"
-#include "ede/setup.hpp"
+#include "engine/engine.hpp"
+#include "scene/scene_loader.hpp"
+#include "setup/setup.hpp"
 #include "progress.hpp"
 #include "replay_tool.hpp"
 

@@ -20,16 +20,16 @@
 #include <type_traits>
 #include <vector>
 
-#include "ede/engine.hpp"
+#include "engine/engine.hpp"
 #include "report_error.hpp"
-#include "ede/log_reader.hpp"
-#include "ede/log_writer.hpp"
-#include "ede/replay.hpp"
-#include "ede/run_summary.hpp"
-#include "ede/scene_loader.hpp"
-#include "ede/setup.hpp"
+#include "log/log_reader.hpp"
+#include "log/log_writer.hpp"
+#include "replay/replay.hpp"
+#include "run/run_summary.hpp"
+#include "scene/scene_loader.hpp"
+#include "setup/setup.hpp"
 #include "command_line.hpp"
-#include "ede/state_csv.hpp"
+#include "core/state_csv.hpp"
 #include "progress.hpp"
 #include "scalar_dispatch.hpp"
 

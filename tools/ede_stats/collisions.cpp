@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "ede/log_series.hpp"
+#include "analysis/log_series.hpp"
 #include "stats_cli.hpp"
 #include "stats_tool.hpp"
 

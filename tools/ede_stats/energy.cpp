@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "ede/log_series.hpp"
-#include "ede/scene_loader.hpp"
+#include "analysis/log_series.hpp"
+#include "scene/scene_loader.hpp"
 #include "stats_cli.hpp"
 #include "stats_tool.hpp"
 

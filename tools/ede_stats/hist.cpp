@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "ede/distributions.hpp"
-#include "ede/log_series.hpp"
+#include "analysis/distributions.hpp"
+#include "analysis/log_series.hpp"
 #include "stats_cli.hpp"
 #include "stats_tool.hpp"
 

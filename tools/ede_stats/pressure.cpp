@@ -19,9 +19,9 @@
 #include <string>
 #include <vector>
 
-#include "ede/log_reader.hpp"
+#include "log/log_reader.hpp"
 #include "open_log.hpp"
-#include "ede/pressure.hpp"
+#include "analysis/pressure.hpp"
 #include "stats_cli.hpp"
 #include "stats_tool.hpp"
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "ede/log_series.hpp"
+#include "analysis/log_series.hpp"
 #include "stats_cli.hpp"
 #include "stats_tool.hpp"
 

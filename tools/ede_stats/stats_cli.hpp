@@ -16,12 +16,12 @@
 #include <string>
 #include <vector>
 
-#include "ede/gas_observables.hpp"
+#include "analysis/gas_observables.hpp"
 #include "open_log.hpp"
 #include "report_error.hpp"
-#include "ede/log_reader.hpp"
-#include "ede/log_series.hpp"
-#include "ede/result.hpp"
+#include "log/log_reader.hpp"
+#include "analysis/log_series.hpp"
+#include "ede/error.hpp"
 #include "exact_text.hpp"
 #include "output_file.hpp"
 #include "plot_runner.hpp"

@@ -1,0 +1,116 @@
+// ede::Rng: xoshiro256** and SplitMix64, transcribed from Vigna's reference C code (prng.di.unimi.it).
+//
+// Everything here is integer arithmetic or IEEE-exact double operations (one multiply by a power of two,
+// one correctly rounded sqrt), so the output is the same bit for bit on every platform; only normal_pair
+// calls std::log. below() is Lemire's "nearly divisionless" method: one 64x64->128 multiply per draw and a
+// division only in the rare rejection branch. Rejected: x % n (biased) and the classic "reject above
+// the largest multiple of n" (a division per draw).
+#include "core/rng.hpp"
+
+#include <cmath>
+
+namespace ede {
+
+namespace {
+
+constexpr std::uint64_t kGolden = 0x9E3779B97F4A7C15ull;
+
+std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
+
+// SplitMix64's output function: a bijection of the 64-bit words with mix(0) = 0.
+std::uint64_t mix(std::uint64_t z) {
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+// The high and low 64 bits of a * b.
+void mul128(std::uint64_t a, std::uint64_t b, std::uint64_t& hi, std::uint64_t& lo) {
+#ifdef __SIZEOF_INT128__
+  const unsigned __int128 p = static_cast<unsigned __int128>(a) * b;
+  hi = static_cast<std::uint64_t>(p >> 64);
+  lo = static_cast<std::uint64_t>(p);
+#else
+  const std::uint64_t a_lo = a & 0xFFFFFFFFu, a_hi = a >> 32, b_lo = b & 0xFFFFFFFFu, b_hi = b >> 32;
+  const std::uint64_t ll = a_lo * b_lo, lh = a_lo * b_hi, hl = a_hi * b_lo, hh = a_hi * b_hi;
+  const std::uint64_t mid = (ll >> 32) + (lh & 0xFFFFFFFFu) + (hl & 0xFFFFFFFFu);
+  hi = hh + (lh >> 32) + (hl >> 32) + (mid >> 32);
+  lo = (mid << 32) | (ll & 0xFFFFFFFFu);
+#endif
+}
+
+}  // namespace
+
+std::uint64_t splitmix64_next(std::uint64_t& state) {
+  state += kGolden;
+  return mix(state);
+}
+
+Rng::Rng(std::uint64_t seed) {
+  std::uint64_t sm = seed;
+  for (auto& word : s_) word = splitmix64_next(sm);
+}
+
+Rng Rng::for_stream(std::uint64_t seed, std::uint64_t stream) { return Rng(seed ^ mix(stream * kGolden)); }
+
+Rng Rng::from_state(const std::array<std::uint64_t, 4>& s) {
+  Rng rng(0);
+  if ((s[0] | s[1] | s[2] | s[3]) != 0) {
+    for (int k = 0; k < 4; ++k) rng.s_[k] = s[k];
+  }
+  return rng;
+}
+
+std::uint64_t Rng::next_u64() {
+  const std::uint64_t result = rotl(s_[1] * 5, 7) * 9;
+  const std::uint64_t t = s_[1] << 17;
+  s_[2] ^= s_[0];
+  s_[3] ^= s_[1];
+  s_[1] ^= s_[2];
+  s_[0] ^= s_[3];
+  s_[2] ^= t;
+  s_[3] = rotl(s_[3], 45);
+  return result;
+}
+
+double Rng::uniform01() { return uniform01_from_bits(next_u64()); }
+
+double Rng::uniform(double lo, double hi) { return lo + (hi - lo) * uniform01(); }
+
+std::uint64_t Rng::below(std::uint64_t n) {
+  std::uint64_t hi, lo;
+  mul128(next_u64(), n, hi, lo);
+  if (lo < n) {
+    const std::uint64_t threshold = (0 - n) % n;  // 2^64 mod n: the low words that would bias the result
+    while (lo < threshold) mul128(next_u64(), n, hi, lo);
+  }
+  return hi;
+}
+
+void Rng::unit_vector(double& ux, double& uy) {
+  for (;;) {
+    const double u = 2.0 * uniform01() - 1.0;
+    const double v = 2.0 * uniform01() - 1.0;
+    const double s = u * u + v * v;
+    if (s > 1.0 || s < 1e-200) continue;  // outside the disk, or too near the centre to normalise
+    const double norm = std::sqrt(s);
+    ux = u / norm;
+    uy = v / norm;
+    return;
+  }
+}
+
+void Rng::normal_pair(double& z0, double& z1) {
+  for (;;) {
+    const double u = 2.0 * uniform01() - 1.0;
+    const double v = 2.0 * uniform01() - 1.0;
+    const double s = u * u + v * v;
+    if (s >= 1.0 || s == 0.0) continue;
+    const double f = std::sqrt(-2.0 * std::log(s) / s);
+    z0 = u * f;
+    z1 = v * f;
+    return;
+  }
+}
+
+}  // namespace ede

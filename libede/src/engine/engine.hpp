@@ -1,0 +1,132 @@
+// The engine's public face: options, counters, and EngineApi<T>, created by make_engine<T>().
+//
+// make_engine looks at the effects a scene uses (walls or periodic; elastic, inelastic, or inelastic with
+// the TC model) once, and returns the one Engine instantiation built for exactly that combination: an
+// elastic gas runs code in which restitution and TC do not exist. The virtual calls here happen per run()
+// call, never per event. The scalar type T (float, double, long double) is the caller's choice; where the
+// library was built with EDE_HAVE_FLOAT128, __float128 too (engine only: the log and replay do not know it).
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/initial_state.hpp"
+#include "core/particles.hpp"
+#include "ede/error.hpp"
+#include "core/run_status.hpp"
+#include "ede/scene.hpp"
+#include "engine/sink.hpp"
+
+namespace ede {
+
+enum class Algorithm {
+  Cells,     // uniform grid + per-particle lazy state + one event per particle: O(log N) per event
+  AllPairs,  // the naive baseline: after each event, the disks involved are checked against all N others
+};
+
+enum class ContactRoot { Stable, Textbook };
+
+struct EngineOptions {
+  BoundaryKind boundary = BoundaryKind::Walls;
+  PhysicsSpec physics;
+  StopSpec stop;
+  std::optional<double> sample_interval;
+  std::vector<ActionSpec> actions;      // sorted by time
+  Algorithm algorithm = Algorithm::Cells;
+  // Every this many events the predictions are rebuilt from the state alone, a point a run can be resumed
+  // from bit for bit (0: only at start and after actions). Changes round-off, so it is part of a run's
+  // definition; engine_options_from() takes it from the scene (automatic: auto_rebuild_interval).
+  std::uint64_t rebuild_interval = 0;
+  // Give up (RunStatus::Stalled) after this many consecutive events at one and the same time
+  // (0: max(10^6, 100 N)).
+  std::uint64_t stall_limit = 0;
+  // Study variants (ede-bench); scenes never set them, and runs with them are not for results.
+  // Textbook: the cancellation-prone root (-b - sqrt(d))/a for pair contact times (accuracy study; built
+  // for elastic scenes without gravity only).
+  ContactRoot contact = ContactRoot::Stable;
+  // The one instantiation that carries every effect (walls, inelastic with TC and per-pair restitution,
+  // gravity), whatever the scene uses: the "no specialization" baseline of ede-bench effects. Walls only.
+  bool all_effects = false;
+};
+
+// The engine options a scene asks for; `disks` sizes the automatic rebuild interval.
+EngineOptions engine_options_from(const Scene& scene, std::size_t disks);
+// max(2^20, 16 N) events: rebuilding costs ~N predictions, so this keeps it under ~1% of the run, and a
+// killed run loses at most a few seconds of work.
+std::uint64_t auto_rebuild_interval(std::size_t disks);
+
+struct EventCounts {
+  std::uint64_t by_kind[kEventKindCount] = {};
+  std::uint64_t stale = 0;       // predictions popped after a participant had changed: discarded
+  std::uint64_t tc_elastic = 0;  // collisions made elastic by the TC model
+
+  std::uint64_t of(EventKind k) const { return by_kind[static_cast<int>(k)]; }
+  std::uint64_t collisions() const { return of(EventKind::Pair) + of(EventKind::Wall); }
+  // Processed events: everything but samples and stale predictions (what stop.events counts).
+  std::uint64_t events() const {
+    return of(EventKind::Pair) + of(EventKind::Wall) + of(EventKind::Cell) + of(EventKind::Wrap) +
+           of(EventKind::Action);
+  }
+};
+
+// Where a resumed run starts: a rebuild point as the log stored it. The disks' positions, velocities and
+// times, their last partners and TC times, and the engine's counters; radius, mass and species come from
+// the scene's initial state.
+template <class T>
+struct ResumePoint {
+  T time{};
+  std::vector<Disk<T>> disks;     // x, y, vx, vy, t and last_partner are used
+  std::vector<T> last_collision;  // TC model only
+  EventCounts counts;
+  std::uint64_t next_sample_index = 0;
+  std::uint64_t next_action_index = 0;
+  std::uint64_t same_time_events = 0;
+  double initial_energy = 0;
+};
+
+template <class T>
+class EngineApi {
+ public:
+  virtual ~EngineApi() = default;
+  // Sinks are called in the order added; the caller keeps them alive for the engine's lifetime.
+  virtual void add_sink(Sink<T>* sink) = 0;
+  // Processes events until a stop condition holds (returns it) or max_events more events and samples were
+  // processed (returns Running). The first call reports the initial state to sinks (on_start).
+  virtual RunStatus run(std::uint64_t max_events = std::numeric_limits<std::uint64_t>::max()) = 0;
+  virtual T time() const = 0;
+  virtual const Particles<T>& particles() const = 0;
+  virtual const EventCounts& counts() const = 0;
+  virtual std::string effects() const = 0;        // e.g. "walls, inelastic (xi=0.5, xi_w=1), TC (tc=1e-4)"
+  virtual std::string stall_message() const = 0;  // why the run stalled or came to rest, and what to do
+  virtual std::size_t memory_bytes() const = 0;   // bytes held by the engine's own arrays
+  virtual double initial_kinetic_energy() const = 0;
+  // Debug and test aid, O(N): pairs overlapping by more than `tolerance` of their contact distance and
+  // predictions in the past, described; empty when all is well.
+  virtual std::string check_invariants(double tolerance) const = 0;
+  // The largest overlap between two disks at the current time, as a fraction of their contact distance
+  // (0 when no pair overlaps). O(N) with the grid. Round-off leaves ~1e-15 in double.
+  virtual double largest_overlap() const = 0;
+};
+
+// A new engine for `initial`; with `resume`, the engine continues from that rebuild point instead, and
+// produces exactly the events the original run produced after it.
+template <class T>
+Result<std::unique_ptr<EngineApi<T>>> make_engine(const InitialState& initial, const EngineOptions& options,
+                                                  const ResumePoint<T>* resume = nullptr);
+
+// Sums over a state, accumulated in long double whatever T is: from the records' velocities, or (the
+// overloads with a time) from the velocities at time t, which differ under gravity.
+template <class T>
+double kinetic_energy(const Particles<T>& p);
+template <class T>
+void momentum(const Particles<T>& p, double& px, double& py);
+template <class T>
+double kinetic_energy(const Particles<T>& p, T t);
+template <class T>
+void momentum(const Particles<T>& p, T t, double& px, double& py);
+
+}  // namespace ede

@@ -1,0 +1,65 @@
+// What the engine requires of its input: sizes the queue can index, finite numbers, the disks inside the
+// box and apart (check_initial_state: setup checked a scene's state already, but a state built in code
+// reaches the engine directly), and a periodic box at least three cells wide.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "setup/setup.hpp"
+#include "engine/engine_factory.hpp"
+
+namespace ede {
+
+namespace {
+bool finite(double v) { return std::isfinite(v); }
+}  // namespace
+
+Status check_engine_input(const InitialState& init, const EngineOptions& options, GridShape& shape) {
+  const std::size_t n = init.size();
+  if (n == 0) return Error{"the initial state has no disks; add a species with count >= 1"};
+  if (n >= kMaxQueueDisks) {
+    std::ostringstream m;
+    m << "the initial state has " << n << " disks; the engine supports fewer than " << kMaxQueueDisks;
+    return Error{m.str()};
+  }
+  if (!(init.lx > 0) || !(init.ly > 0) || !finite(init.lx) || !finite(init.ly))
+    return Error{"the box size must be positive and finite"};
+  double max_radius = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!finite(init.x[i]) || !finite(init.y[i]) || !finite(init.vx[i]) || !finite(init.vy[i]) ||
+        !(init.radius[i] > 0) || !finite(init.radius[i]) || !(init.mass[i] > 0) || !finite(init.mass[i])) {
+      std::ostringstream m;
+      m << "disk " << i << " has a non-finite value or a non-positive radius or mass";
+      return Error{m.str()};
+    }
+    max_radius = std::max(max_radius, init.radius[i]);
+  }
+  const PhysicsSpec& ph = options.physics;
+  bool in_range = ph.restitution >= 0 && ph.restitution <= 1;
+  for (int w = 0; w < 4; ++w) in_range = in_range && ph.wall(w) >= 0 && ph.wall(w) <= 1;
+  for (const PairRestitution& p : ph.pairs) {
+    in_range = in_range && p.value >= 0 && p.value <= 1;
+    for (const std::string& name : {p.a, p.b})
+      if (std::find(init.species_names.begin(), init.species_names.end(), name) == init.species_names.end())
+        return Error{"a pair restitution names species '" + name + "', which the initial state does not have"};
+  }
+  if (!in_range) return Error{"restitution coefficients must lie in [0, 1]"};
+  if (!std::isfinite(ph.gravity[0]) || !std::isfinite(ph.gravity[1])) return Error{"gravity must be finite"};
+  if (ph.has_gravity() && options.boundary == BoundaryKind::Periodic)
+    return Error{"gravity needs walls: in a periodic box every disk would fall forever"};
+  if (ph.has_gravity() && options.stop.energy_fraction)
+    return Error{"with gravity the kinetic energy changes between collisions: stop on time or events instead"};
+  if (!(ph.tc >= 0) || !finite(ph.tc)) return Error{"tc must be finite and >= 0"};
+  const bool periodic = options.boundary == BoundaryKind::Periodic;
+  if (Status s = check_initial_state(init, options.boundary, "the initial state"); !s) return s;
+  if (periodic && (init.lx < 3 * 2 * max_radius * (1 + 1e-6) || init.ly < 3 * 2 * max_radius * (1 + 1e-6))) {
+    std::ostringstream m;
+    m << "a periodic box must be at least three largest diameters wide on each side (largest diameter "
+      << 2 * max_radius << ", box " << init.lx << " x " << init.ly << "); enlarge the box or use walls";
+    return Error{m.str()};
+  }
+  shape = engine_grid_for(init, periodic, options.algorithm);
+  return Ok{};
+}
+
+}  // namespace ede

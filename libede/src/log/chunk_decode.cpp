@@ -1,0 +1,190 @@
+// ChunkDecoder and apply_event; see chunk_codec.hpp.
+#include <cmath>
+
+#include "log/chunk_codec.hpp"
+
+namespace ede {
+
+template <class T>
+ChunkDecoder<T>::ChunkDecoder(std::vector<std::uint64_t> storage, const unsigned char* const* cols,
+                              const std::size_t* sizes, std::uint64_t first_event, std::uint32_t count,
+                              std::size_t disks, T last_time)
+    : storage_(std::move(storage)),
+      times_(cols[kTimes], sizes[kTimes]),
+      kinds_(cols[kKinds], sizes[kKinds]),
+      disks_(cols[kDisks], sizes[kDisks]),
+      partners_(cols[kPartners], sizes[kPartners]),
+      residuals_(cols[kResiduals], sizes[kResiduals]),
+      raw_shuffled_(cols[kRaw]),
+      raw_size_(sizes[kRaw]),
+      first_event_(first_event),
+      count_(count),
+      disks_count_(disks),
+      last_time_(last_time) {}
+
+template <class T>
+Status ChunkDecoder<T>::init() {
+  if (!unshuffle_bytes(raw_shuffled_, raw_size_, kScalarWidth<T>, raw_))
+    return Error{"chunk at event " + std::to_string(first_event_) +
+                 ": the raw velocity column is not a whole number of scalars"};
+  return Ok{};
+}
+
+template <class T>
+bool ChunkDecoder<T>::fail(const std::string& what) {
+  if (error_.empty()) error_ = what;
+  return false;
+}
+
+template <class T>
+bool ChunkDecoder<T>::read_disk(ByteReader& r, std::int32_t& out) {
+  u128 v;
+  if (!r.varint(v, 32)) return fail("a disk id is cut short");
+  if (v >= disks_count_)
+    return fail("disk id " + std::to_string(std::uint64_t(v)) + " out of range (N = " + std::to_string(disks_count_) + ")");
+  out = std::int32_t(v);
+  return true;
+}
+
+template <class T>
+bool ChunkDecoder<T>::read_scalar(T& out) {
+  if (raw_at_ + kScalarWidth<T> > raw_.size()) return fail("the raw velocity column is cut short");
+  out = scalar_from_bytes<T>(raw_.data() + raw_at_);
+  raw_at_ += kScalarWidth<T>;
+  if (!std::isfinite(double(out))) return fail("a stored velocity is not finite");
+  return true;
+}
+
+template <class T>
+bool ChunkDecoder<T>::read_residual(T predicted, T& out) {
+  u128 r;
+  if (!residuals_.varint(r)) return fail("the residual column is cut short");
+  out = apply_residual(r, predicted);
+  if (!std::isfinite(double(out))) return fail("a decoded velocity is not finite");
+  return true;
+}
+
+template <class T>
+bool ChunkDecoder<T>::read_time(T& out) {
+  u128 v;
+  if (!times_.varint(v, ScalarBytes<T>::kBits)) return fail("the time column is cut short");
+  const bool first = decoded_ == 0;
+  const u128 key = first ? v : previous_key_ + v;
+  if (!first && (key < previous_key_ || (key >> ScalarBytes<T>::kBits) != 0)) return fail("an event time overflows");
+  previous_key_ = key;
+  out = from_ordered_key<T>(key);
+  if (!std::isfinite(double(out))) return fail("an event time is not finite");
+  if (out < last_time_) return fail("an event time goes back in time");
+  last_time_ = out;
+  return true;
+}
+
+template <class T>
+bool ChunkDecoder<T>::read_fields(const Particles<T>& p, DecodedEvent<T>& e) {
+  unsigned char kind;
+  if (!kinds_.byte(kind)) return fail("the kind column is cut short");
+  e.kind = static_cast<EventKind>(kind);
+  switch (e.kind) {
+    case EventKind::Pair: {
+      u128 zj;
+      if (!read_disk(disks_, e.i)) return false;
+      if (!partners_.varint(zj, 33)) return fail("a pair partner is cut short or out of range");  // zigzag of an int32 difference
+      const i128 j = i128(e.i) + unzigzag(zj);
+      if (j < 0 || j >= i128(disks_count_) || j == e.i) return fail("a pair partner id is out of range");
+      e.j = std::int32_t(j);
+      // Velocities just before the event: the records' own, moved on by gravity if there is any.
+      const T aix = p.vx_at(std::size_t(e.i), e.time), aiy = p.vy_at(std::size_t(e.i), e.time);
+      const T ajx = p.vx_at(std::size_t(e.j), e.time), ajy = p.vy_at(std::size_t(e.j), e.time);
+      const T mi = p.mass[std::size_t(e.i)], mj = p.mass[std::size_t(e.j)];
+      if (!read_scalar(e.vix) || !read_scalar(e.viy)) return false;
+      return read_residual(momentum_prediction(mi, mj, aix, ajx, e.vix), e.vjx) &&
+             read_residual(momentum_prediction(mi, mj, aiy, ajy, e.viy), e.vjy);
+    }
+    case EventKind::Wall: {
+      u128 wall;
+      if (!read_disk(disks_, e.i)) return false;
+      if (!partners_.varint(wall, 8) || wall > 3) return fail("a wall id is missing or out of range");
+      e.j = std::int32_t(wall);
+      const T ax = p.vx_at(std::size_t(e.i), e.time), ay = p.vy_at(std::size_t(e.i), e.time);
+      const bool vertical = e.j == kWallLeft || e.j == kWallRight;
+      return read_residual(vertical ? -ax : ax, e.vix) && read_residual(vertical ? ay : -ay, e.viy);
+    }
+    case EventKind::Wrap: {
+      u128 dir;
+      if (!read_disk(disks_, e.i)) return false;
+      if (!partners_.varint(dir, 8) || dir > 3) return fail("a wrap direction is missing or out of range");
+      e.j = std::int32_t(dir);
+      return true;
+    }
+    case EventKind::Action: return true;
+    default: return fail("unknown event kind " + std::to_string(kind));
+  }
+}
+
+template <class T>
+Status ChunkDecoder<T>::next(const Particles<T>& state, DecodedEvent<T>& e) {
+  if (done()) return Error{"chunk at event " + std::to_string(first_event_) + " has no more events"};
+  e = DecodedEvent<T>{};
+  e.index = first_event_ + decoded_;
+  if (!read_time(e.time) || !read_fields(state, e)) return Error{"event " + std::to_string(e.index) + ": " + error_};
+  ++decoded_;
+  return Ok{};
+}
+
+template <class T>
+Status ChunkDecoder<T>::check_consumed() const {
+  if (!times_.at_end() || !kinds_.at_end() || !disks_.at_end() || !partners_.at_end() || !residuals_.at_end() ||
+      raw_at_ != raw_.size())
+    return Error{"chunk at event " + std::to_string(first_event_) + ": its columns hold more data than its " +
+                 std::to_string(count_) + " events"};
+  return Ok{};
+}
+
+template <class T>
+static bool finite_record(const Disk<T>& d) {
+  return std::isfinite(double(d.x)) && std::isfinite(double(d.y)) && std::isfinite(double(d.t));
+}
+
+template <class T>
+bool apply_event(const DecodedEvent<T>& e, Particles<T>& p, T lx, T ly) {
+  switch (e.kind) {
+    case EventKind::Pair: {
+      Disk<T>& a = p.disk[std::size_t(e.i)];
+      Disk<T>& b = p.disk[std::size_t(e.j)];
+      advance_disk(a, e.time, p.gx, p.gy);
+      advance_disk(b, e.time, p.gx, p.gy);
+      a.vx = e.vix, a.vy = e.viy, b.vx = e.vjx, b.vy = e.vjy;
+      return finite_record(a) && finite_record(b);
+    }
+    case EventKind::Wall: {
+      Disk<T>& a = p.disk[std::size_t(e.i)];
+      advance_disk(a, e.time, p.gx, p.gy);
+      a.vx = e.vix, a.vy = e.viy;
+      return finite_record(a);
+    }
+    case EventKind::Wrap: {
+      Disk<T>& a = p.disk[std::size_t(e.i)];
+      wrap_disk(a, e.time, e.j, lx, ly);
+      return finite_record(a);
+    }
+    case EventKind::Action: {
+      bool ok = true;
+      for (Disk<T>& d : p.disk) {
+        reverse_disk(d, e.time, p.gx, p.gy);
+        ok = ok && finite_record(d);
+      }
+      return ok;
+    }
+    default: return true;
+  }
+}
+
+template class ChunkDecoder<float>;
+template class ChunkDecoder<double>;
+template class ChunkDecoder<long double>;
+template bool apply_event<float>(const DecodedEvent<float>&, Particles<float>&, float, float);
+template bool apply_event<double>(const DecodedEvent<double>&, Particles<double>&, double, double);
+template bool apply_event<long double>(const DecodedEvent<long double>&, Particles<long double>&, long double,
+                                       long double);
+
+}  // namespace ede

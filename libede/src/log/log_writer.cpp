@@ -1,0 +1,332 @@
+// LogWriter<T>: chunks, keyframes, index, trailer; see log_writer.hpp and schema/FORMAT.md.
+//
+// Chunk boundaries are a function of the event index alone (every chunk_events events, and at every
+// keyframe), so a resumed run cut at a keyframe writes exactly the chunks the uninterrupted run wrote.
+#include "log/log_writer.hpp"
+
+#include <capnp/message.h>
+#include <capnp/serialize.h>
+
+#include <algorithm>
+#include <cstring>
+
+#include "core/build_info.hpp"
+#include "log/chunk_codec.hpp"
+#include "ede_log.capnp.h"
+#include "log/log_framing.hpp"
+#include "log/record_writer.hpp"
+#include "log/scalar_bytes.hpp"
+
+namespace ede {
+
+namespace {
+
+template <class T>
+logschema::ScalarType schema_scalar() {
+  if constexpr (std::is_same_v<T, float>) return logschema::ScalarType::FLOAT32;
+  if constexpr (std::is_same_v<T, double>) return logschema::ScalarType::FLOAT64;
+  return logschema::ScalarType::FLOAT80;
+}
+
+std::vector<unsigned char> to_bytes(capnp::MessageBuilder& message) {
+  const kj::Array<capnp::word> words = capnp::messageToFlatArray(message);
+  const auto bytes = words.asBytes();
+  return std::vector<unsigned char>(bytes.begin(), bytes.end());
+}
+
+void set_data(capnp::Data::Builder out, const std::vector<unsigned char>& bytes) {
+  if (!bytes.empty()) std::memcpy(out.begin(), bytes.data(), bytes.size());
+}
+
+// A per-disk column of scalars, byte-plane shuffled (positions and velocities share their high bytes).
+template <class T, class F>
+std::vector<unsigned char> scalar_column(std::size_t n, F value_of) {
+  std::vector<unsigned char> raw(n * kScalarWidth<T>);
+  for (std::size_t i = 0; i < n; ++i) scalar_to_bytes<T>(value_of(i), raw.data() + i * kScalarWidth<T>);
+  return shuffle_bytes(raw, kScalarWidth<T>);
+}
+
+template <class T>
+std::vector<unsigned char> one_scalar(T v) {
+  std::vector<unsigned char> b(kScalarWidth<T>);
+  scalar_to_bytes(v, b.data());
+  return b;
+}
+
+}  // namespace
+
+std::uint64_t auto_keyframe_interval(std::size_t disks) {
+  return std::max<std::uint64_t>(std::uint64_t(1) << 20, 4 * std::uint64_t(disks));
+}
+
+LogSettings LogSettings::from(const LogSpec& spec) {
+  LogSettings s;
+  if (spec.keyframe_interval) s.keyframe_interval = *spec.keyframe_interval;
+  if (spec.chunk_events) s.chunk_events = *spec.chunk_events;
+  if (spec.compression_level) s.compression_level = *spec.compression_level;
+  return s;
+}
+
+LogRunInfo LogRunInfo::from(const Scene& scene, const EngineOptions& options, const std::vector<std::string>& species) {
+  LogRunInfo r;
+  r.scene_name = scene.source_name;
+  r.scene_text = scene.source_text;
+  r.seed = scene.seed;
+  r.scalar = scene.scalar;
+  r.species_names = species;
+  r.lx = scene.lx;
+  r.ly = scene.ly;
+  r.boundary = options.boundary;
+  r.rebuild_interval = options.rebuild_interval;
+  r.tc_model = options.physics.tc > 0 && !options.physics.elastic();
+  r.gx = options.physics.gravity[0];
+  r.gy = options.physics.gravity[1];
+  return r;
+}
+
+template <class T>
+struct LogWriter<T>::Impl {
+  LogRunInfo run;
+  LogSettings settings;
+  RecordWriter out;
+  std::vector<T> mass;
+  ChunkEncoder<T> chunk{mass};
+  std::uint64_t logged = 0;
+  struct Pending {  // an index entry whose offset is known once the record is written
+    std::size_t sequence;
+    LogContinuation::Entry entry;
+  };
+  std::vector<LogContinuation::Entry> kept;  // entries of a continued log's first part (offsets known)
+  std::vector<Pending> pending;
+  std::uint64_t bytes = 0;
+  bool finished = false;
+
+  Impl(const std::string& path, const LogRunInfo& r, const LogSettings& s, std::uint64_t start, int level)
+      : run(r), settings(s), out(path, start, level) {}
+
+  // What needs the disks: the masses (residual predictions) and the automatic keyframe interval.
+  void ensure_masses(const Particles<T>& p) {
+    if (mass.empty()) mass = p.mass;
+    if (settings.keyframe_interval == 0) settings.keyframe_interval = auto_keyframe_interval(p.size());
+  }
+
+  void write_header(const Particles<T>& p) {
+    capnp::MallocMessageBuilder message;
+    auto h = message.initRoot<logschema::Header>();
+    h.setEngineVersion(EDE_VERSION);
+    h.setCompiler(build_compiler());
+    h.setCompileFlags(build_flags());
+    h.setScalar(schema_scalar<T>());
+    h.setSeed(run.seed);
+    h.setSceneName(run.scene_name);
+    h.setSceneText(run.scene_text);
+    h.setDiskCount(std::uint32_t(p.size()));
+    auto names = h.initSpeciesNames(std::uint32_t(run.species_names.size()));
+    for (std::size_t k = 0; k < run.species_names.size(); ++k) names.set(std::uint32_t(k), run.species_names[k]);
+    h.setBoxX(run.lx);
+    h.setBoxY(run.ly);
+    h.setBoundary(run.boundary == BoundaryKind::Periodic ? logschema::Boundary::PERIODIC : logschema::Boundary::WALLS);
+    h.setChunkEvents(settings.chunk_events);
+    h.setKeyframeInterval(settings.keyframe_interval);
+    h.setRebuildInterval(run.rebuild_interval);
+    set_data(h.initRadius(std::uint32_t(p.size() * kScalarWidth<T>)),
+             scalar_column<T>(p.size(), [&](std::size_t i) { return p.disk[i].r; }));
+    set_data(h.initMass(std::uint32_t(p.size() * kScalarWidth<T>)),
+             scalar_column<T>(p.size(), [&](std::size_t i) { return p.mass[i]; }));
+    auto species = h.initSpecies(std::uint32_t(p.size()));
+    for (std::size_t i = 0; i < p.size(); ++i) species.set(std::uint32_t(i), std::uint32_t(p.species[i]));
+    h.setInitialEnergy(kinetic_energy(p));
+    h.setTcModel(run.tc_model);
+    h.setColumnEncoding(1);
+    h.setGravityX(run.gx);
+    h.setGravityY(run.gy);
+    logfmt::RecordHeader rh;
+    rh.kind = logfmt::RecordKind::Header;
+    out.submit(rh, to_bytes(message));
+  }
+
+  void flush_chunk() {
+    if (chunk.count() == 0) return;
+    const ChunkColumns c = chunk.columns();
+    capnp::MallocMessageBuilder message;
+    auto b = message.initRoot<logschema::Chunk>();
+    b.setFirstEvent(chunk.first_event());
+    b.setCount(chunk.count());
+    set_data(b.initTimes(std::uint32_t(c.times.size())), c.times);
+    set_data(b.initKinds(std::uint32_t(c.kinds.size())), c.kinds);
+    set_data(b.initDisks(std::uint32_t(c.disks.size())), c.disks);
+    set_data(b.initPartners(std::uint32_t(c.partners.size())), c.partners);
+    set_data(b.initVelocitiesRaw(std::uint32_t(c.raw.size())), c.raw);
+    set_data(b.initVelocityResiduals(std::uint32_t(c.residuals.size())), c.residuals);
+    logfmt::RecordHeader rh;
+    rh.kind = logfmt::RecordKind::Chunk;
+    rh.first_event = chunk.first_event();
+    rh.event_count = chunk.count();
+    rh.time_first = double(chunk.time_first());
+    rh.time_last = double(chunk.time_last());
+    const std::size_t seq = out.submit(rh, to_bytes(message));
+    pending.push_back({seq, {std::uint8_t(logfmt::RecordKind::Chunk), 0, rh.first_event, rh.event_count,
+                             rh.time_first, rh.time_last, false}});
+    chunk.reset(logged);
+  }
+
+  void write_keyframe(const Particles<T>& p, T time, const RebuildPoint<T>* rebuild) {
+    flush_chunk();
+    const std::size_t n = p.size();
+    capnp::MallocMessageBuilder message;
+    auto k = message.initRoot<logschema::Keyframe>();
+    k.setEventsBefore(logged);
+    set_data(k.initTime(kScalarWidth<T>), one_scalar(time));
+    k.setResumable(rebuild != nullptr);
+    const auto column = [&](auto value_of) { return scalar_column<T>(n, value_of); };
+    const std::uint32_t bytes_per_column = std::uint32_t(n * kScalarWidth<T>);
+    set_data(k.initX(bytes_per_column), column([&](std::size_t i) { return p.disk[i].x; }));
+    set_data(k.initY(bytes_per_column), column([&](std::size_t i) { return p.disk[i].y; }));
+    set_data(k.initVx(bytes_per_column), column([&](std::size_t i) { return p.disk[i].vx; }));
+    set_data(k.initVy(bytes_per_column), column([&](std::size_t i) { return p.disk[i].vy; }));
+    set_data(k.initT(bytes_per_column), column([&](std::size_t i) { return p.disk[i].t; }));
+    if (rebuild) write_resume_fields(k, *rebuild);
+    logfmt::RecordHeader rh;
+    rh.kind = logfmt::RecordKind::Keyframe;
+    rh.first_event = logged;
+    rh.time_first = rh.time_last = double(time);
+    rh.resumable = rebuild != nullptr;
+    const std::size_t seq = out.submit(rh, to_bytes(message));
+    pending.push_back({seq, {std::uint8_t(logfmt::RecordKind::Keyframe), 0, logged, 0, rh.time_first,
+                             rh.time_last, rh.resumable}});
+  }
+
+  void write_resume_fields(logschema::Keyframe::Builder k, const RebuildPoint<T>& r) {
+    const Particles<T>& p = r.particles;
+    auto partners = k.initLastPartner(std::uint32_t(p.size()));
+    for (std::size_t i = 0; i < p.size(); ++i) partners.set(std::uint32_t(i), p.disk[i].last_partner);
+    if (!p.last_collision.empty())
+      set_data(k.initLastCollision(std::uint32_t(p.size() * kScalarWidth<T>)),
+               scalar_column<T>(p.size(), [&](std::size_t i) { return p.last_collision[i]; }));
+    auto counts = k.initEngineCounts(kEventKindCount + 2);
+    for (int c = 0; c < kEventKindCount; ++c) counts.set(std::uint32_t(c), r.counts.by_kind[c]);
+    counts.set(kEventKindCount, r.counts.stale);
+    counts.set(kEventKindCount + 1, r.counts.tc_elastic);
+    k.setNextSample(r.next_sample_index);
+    k.setNextAction(r.next_action_index);
+    k.setSameTimeEvents(r.same_time_events);
+  }
+
+  void write_index(T final_time, RunStatus status) {
+    out.flush();
+    std::vector<LogContinuation::Entry> entries = kept;
+    for (const Pending& p : pending) {
+      LogContinuation::Entry e = p.entry;
+      e.offset = out.offset_of(p.sequence);
+      entries.push_back(e);
+    }
+    capnp::MallocMessageBuilder message;
+    auto idx = message.initRoot<logschema::Index>();
+    auto list = idx.initEntries(std::uint32_t(entries.size()));
+    for (std::size_t k = 0; k < entries.size(); ++k) {
+      auto e = list[std::uint32_t(k)];
+      e.setKind(entries[k].kind);
+      e.setOffset(entries[k].offset);
+      e.setFirstEvent(entries[k].first_event);
+      e.setCount(entries[k].count);
+      e.setTimeFirst(entries[k].time_first);
+      e.setTimeLast(entries[k].time_last);
+      e.setResumable(entries[k].resumable);
+    }
+    idx.setTotalEvents(logged);
+    set_data(idx.initFinalTime(kScalarWidth<T>), one_scalar(final_time));
+    idx.setStatus(to_string(status));
+    logfmt::RecordHeader rh;
+    rh.kind = logfmt::RecordKind::Index;
+    rh.first_event = logged;
+    rh.time_first = rh.time_last = double(final_time);
+    const std::size_t seq = out.submit(rh, to_bytes(message));
+    out.flush();
+    logfmt::Trailer trailer{out.offset_of(seq), out.end_offset()};
+    std::vector<unsigned char> bytes(logfmt::kTrailerSize);
+    logfmt::encode_trailer(trailer, bytes.data());
+    out.write_raw(std::move(bytes));
+    bytes_ = out.end_offset();
+  }
+  std::uint64_t bytes_ = 0;
+};
+
+template <class T>
+Result<std::unique_ptr<LogWriter<T>>> LogWriter<T>::create(const std::string& path, const LogRunInfo& run,
+                                                           const LogSettings& settings,
+                                                           const LogContinuation* continuation) {
+  if (settings.chunk_events == 0) return Error{"log settings: chunk_events must be positive"};
+  const std::uint64_t start = continuation ? continuation->cut_offset : 0;
+  auto impl = std::make_unique<Impl>(path, run, settings, start, settings.compression_level);
+  if (std::string e = impl->out.error(); !e.empty()) return Error{e};
+  if (continuation) {
+    impl->logged = continuation->events_before;
+    impl->kept = continuation->entries;
+  } else {
+    std::vector<unsigned char> header(logfmt::kFileHeaderSize);
+    logfmt::encode_file_header(header.data());
+    impl->out.write_raw(std::move(header));
+  }
+  impl->chunk.reset(impl->logged);
+  return std::unique_ptr<LogWriter<T>>(new LogWriter<T>(std::move(impl)));
+}
+
+template <class T>
+LogWriter<T>::LogWriter(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+
+template <class T>
+LogWriter<T>::~LogWriter() = default;
+
+template <class T>
+void LogWriter<T>::on_start(T, const Particles<T>& p) {
+  impl_->ensure_masses(p);
+  impl_->write_header(p);
+}
+
+template <class T>
+void LogWriter<T>::on_event(const EventOutcome<T>& e, const Particles<T>& p) {
+  if (e.kind == EventKind::Cell) return;
+  Impl& w = *impl_;
+  w.ensure_masses(p);
+  w.chunk.add(e);
+  ++w.logged;
+  if (w.chunk.count() >= w.settings.chunk_events) w.flush_chunk();
+  if (w.logged % w.settings.keyframe_interval == 0) w.write_keyframe(p, e.time, nullptr);
+}
+
+template <class T>
+void LogWriter<T>::on_rebuild(const RebuildPoint<T>& point) {
+  impl_->ensure_masses(point.particles);
+  impl_->write_keyframe(point.particles, point.time, &point);
+}
+
+template <class T>
+void LogWriter<T>::on_finish(T time, const Particles<T>&, RunStatus status) {
+  Impl& w = *impl_;
+  if (w.finished) return;
+  w.finished = true;
+  w.flush_chunk();
+  w.write_index(time, status);
+  w.out.finish();
+}
+
+template <class T>
+std::string LogWriter<T>::error() const {
+  return impl_->out.error();
+}
+
+template <class T>
+std::uint64_t LogWriter<T>::events_logged() const {
+  return impl_->logged;
+}
+
+template <class T>
+std::uint64_t LogWriter<T>::bytes_written() const {
+  return impl_->bytes_;
+}
+
+template class LogWriter<float>;
+template class LogWriter<double>;
+template class LogWriter<long double>;
+
+}  // namespace ede

@@ -1,0 +1,88 @@
+// LogWriter<T>: the sink that records a run to an event log (.ede; format in schema/FORMAT.md).
+//
+// Every event that changes the state (pair, wall, wrap, action) goes into chunks of columns; the full state
+// goes into keyframes every keyframe_interval logged events and at every engine rebuild (those are
+// resumable); an index and a fixed trailer close the file at the end. Compression and writing run on a
+// second thread in submission order, so logging costs the simulation little and the bytes never depend on
+// timing. The writer never changes the run: a run with and without a log produces the same events.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/engine.hpp"
+#include "ede/error.hpp"
+#include "ede/scene.hpp"
+#include "engine/sink.hpp"
+
+namespace ede {
+
+// max(2^20, 4 N) logged events: a keyframe costs ~34 bytes per disk, events ~24 bytes each, so keyframes
+// stay under ~30% of a log at any N (a fixed 2^20 took 55% at N = 10^6), and seeking replays at most
+// ~4 N events (~0.3 s at N = 10^6, ~15 M events/s). See docs/performance.md, "Event log".
+std::uint64_t auto_keyframe_interval(std::size_t disks);
+
+struct LogSettings {
+  std::uint64_t keyframe_interval = 0;         // logged events between keyframes; 0: auto_keyframe_interval
+  std::uint32_t chunk_events = 16384;          // events per chunk
+  int compression_level = 3;                   // zstd level (docs/log-format-choices in docs/performance.md)
+  static LogSettings from(const LogSpec& spec);
+};
+
+// What the header records about the run besides the per-disk constants the writer reads at on_start.
+struct LogRunInfo {
+  std::string scene_name;
+  std::string scene_text;
+  std::uint64_t seed = 0;
+  ScalarKind scalar = ScalarKind::Double;
+  std::vector<std::string> species_names;
+  double lx = 1, ly = 1;
+  BoundaryKind boundary = BoundaryKind::Walls;
+  std::uint64_t rebuild_interval = 0;
+  bool tc_model = false;
+  double gx = 0, gy = 0;  // gravity
+  static LogRunInfo from(const Scene& scene, const EngineOptions& options, const std::vector<std::string>& species);
+};
+
+// Where an interrupted log continues (from LogReader::resume_point).
+struct LogContinuation {
+  std::uint64_t cut_offset = 0;        // the file is cut here (end of the resumable keyframe's record)
+  std::uint64_t events_before = 0;     // logged events before the keyframe
+  struct Entry {
+    std::uint8_t kind;
+    std::uint64_t offset, first_event, count;
+    double time_first, time_last;
+    bool resumable;
+  };
+  std::vector<Entry> entries;          // index entries of the records kept
+};
+
+template <class T>
+class LogWriter final : public Sink<T> {
+ public:
+  // A new log at `path`, or, with `continuation`, the continuation of an interrupted one.
+  static Result<std::unique_ptr<LogWriter>> create(const std::string& path, const LogRunInfo& run,
+                                                   const LogSettings& settings,
+                                                   const LogContinuation* continuation = nullptr);
+  ~LogWriter() override;
+
+  void on_start(T time, const Particles<T>& particles) override;
+  void on_event(const EventOutcome<T>& outcome, const Particles<T>& particles) override;
+  void on_rebuild(const RebuildPoint<T>& point) override;
+  void on_finish(T time, const Particles<T>& particles, RunStatus status) override;
+
+  // Empty while all is well; else the first I/O error (the run goes on; the tool reports it at the end).
+  std::string error() const;
+  std::uint64_t events_logged() const;
+  std::uint64_t bytes_written() const;  // after on_finish
+
+  struct Impl;
+
+ private:
+  explicit LogWriter(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace ede

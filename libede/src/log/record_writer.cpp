@@ -1,0 +1,151 @@
+// RecordWriter; see record_writer.hpp.
+#include "log/record_writer.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+#include <zstd.h>
+
+#include <cerrno>
+#include <cstring>
+
+namespace ede {
+
+namespace {
+constexpr std::size_t kMaxQueued = 4;  // records waiting for the worker before the event loop waits
+
+std::string write_all(int fd, const unsigned char* p, std::size_t n) {
+  while (n > 0) {
+    const ssize_t w = ::write(fd, p, n);
+    if (w < 0) {
+      if (errno == EINTR) continue;
+      return std::strerror(errno);
+    }
+    p += w;
+    n -= std::size_t(w);
+  }
+  return {};
+}
+}  // namespace
+
+RecordWriter::RecordWriter(const std::string& path, std::uint64_t start_offset, int zstd_level)
+    : level_(zstd_level), offset_(start_offset) {
+  const int flags = start_offset == 0 ? (O_WRONLY | O_CREAT | O_TRUNC) : O_WRONLY;
+  fd_ = ::open(path.c_str(), flags | O_CLOEXEC, 0644);
+  if (fd_ < 0) {
+    error_ = "cannot open '" + path + "' for writing: " + std::strerror(errno);
+    return;
+  }
+  if (start_offset != 0 &&
+      (::ftruncate(fd_, off_t(start_offset)) != 0 || ::lseek(fd_, off_t(start_offset), SEEK_SET) < 0)) {
+    error_ = "cannot cut '" + path + "' at byte " + std::to_string(start_offset) + ": " + std::strerror(errno);
+    return;
+  }
+  ZSTD_CCtx* cctx = ZSTD_createCCtx();
+  ZSTD_CCtx_setParameter(cctx, ZSTD_c_compressionLevel, level_);
+  ZSTD_CCtx_setParameter(cctx, ZSTD_c_checksumFlag, 1);
+  ZSTD_CCtx_setParameter(cctx, ZSTD_c_contentSizeFlag, 1);
+  zstd_context_ = cctx;
+  worker_ = std::thread([this] { work(); });
+}
+
+RecordWriter::~RecordWriter() { finish(); }
+
+void RecordWriter::write_raw(std::vector<unsigned char> bytes) {
+  std::unique_lock lock(mutex_);
+  idle_.wait(lock, [&] { return queue_.size() < kMaxQueued; });
+  queue_.push_back(Job{true, {}, std::move(bytes)});
+  wake_.notify_one();
+}
+
+std::size_t RecordWriter::submit(logfmt::RecordHeader header, std::vector<unsigned char> content) {
+  std::unique_lock lock(mutex_);
+  idle_.wait(lock, [&] { return queue_.size() < kMaxQueued; });
+  queue_.push_back(Job{false, header, std::move(content)});
+  wake_.notify_one();
+  return submitted_++;
+}
+
+void RecordWriter::flush() {
+  std::unique_lock lock(mutex_);
+  idle_.wait(lock, [&] { return queue_.empty() && !busy_; });
+}
+
+std::uint64_t RecordWriter::offset_of(std::size_t sequence) const {
+  std::lock_guard lock(mutex_);
+  return sequence < offsets_.size() ? offsets_[sequence] : 0;
+}
+
+std::uint64_t RecordWriter::end_offset() {
+  flush();
+  std::lock_guard lock(mutex_);
+  return offset_;
+}
+
+std::string RecordWriter::error() {
+  std::lock_guard lock(mutex_);
+  return error_;
+}
+
+std::string RecordWriter::finish() {
+  if (worker_.joinable()) {
+    {
+      std::lock_guard lock(mutex_);
+      stopping_ = true;
+    }
+    wake_.notify_one();
+    worker_.join();
+  }
+  if (fd_ >= 0) {
+    if (::close(fd_) != 0 && error_.empty()) error_ = std::string("closing the log: ") + std::strerror(errno);
+    fd_ = -1;
+  }
+  if (zstd_context_) {
+    ZSTD_freeCCtx(static_cast<ZSTD_CCtx*>(zstd_context_));
+    zstd_context_ = nullptr;
+  }
+  return error_;
+}
+
+void RecordWriter::work() {
+  for (;;) {
+    Job job;
+    {
+      std::unique_lock lock(mutex_);
+      wake_.wait(lock, [&] { return stopping_ || !queue_.empty(); });
+      if (queue_.empty()) return;
+      job = std::move(queue_.front());
+      queue_.pop_front();
+      busy_ = true;
+    }
+    const std::uint64_t at = offset_;
+    const std::string problem = error_.empty() ? write_job(job) : std::string();
+    {
+      std::lock_guard lock(mutex_);
+      if (!job.raw) offsets_.push_back(at);
+      if (!problem.empty() && error_.empty()) error_ = problem;
+      busy_ = false;
+    }
+    idle_.notify_all();
+  }
+}
+
+// Runs on the worker: compress, frame, write. Touches offset_ and the zstd context only here.
+std::string RecordWriter::write_job(Job& job) {
+  if (job.raw) {
+    const std::string e = write_all(fd_, job.bytes.data(), job.bytes.size());
+    offset_ += job.bytes.size();
+    return e.empty() ? e : "writing the log: " + e;
+  }
+  auto* cctx = static_cast<ZSTD_CCtx*>(zstd_context_);
+  std::vector<unsigned char> out(logfmt::kRecordHeaderSize + ZSTD_compressBound(job.bytes.size()));
+  const std::size_t n = ZSTD_compress2(cctx, out.data() + logfmt::kRecordHeaderSize, out.size() - logfmt::kRecordHeaderSize,
+                                       job.bytes.data(), job.bytes.size());
+  if (ZSTD_isError(n)) return std::string("compressing a log record: ") + ZSTD_getErrorName(n);
+  job.header.payload_size = n;
+  logfmt::encode_record_header(job.header, out.data());
+  const std::string e = write_all(fd_, out.data(), logfmt::kRecordHeaderSize + n);
+  offset_ += logfmt::kRecordHeaderSize + n;
+  return e.empty() ? e : "writing the log: " + e;
+}
+
+}  // namespace ede

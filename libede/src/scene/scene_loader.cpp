@@ -1,0 +1,529 @@
+// Scene loading: TOML text -> tree -> --set overrides -> checked Scene, plus the effective scene text.
+//
+// The tree is read top-down, one function per table, in the order a reader meets them in a file. Each
+// function says what its keys mean and which values are allowed; reading and reporting are scene_keys'
+// job. Checks across keys (count vs positions, radius vs packing fraction, region vs box, keys of another
+// kind) sit where both keys are known. What needs the drawn disks (overlaps, disks fitting a region) is
+// setup's job. Rejected: a generic schema driving the checks, which needed escape hatches for every one
+// of those cross-key rules and ended up longer than the code it replaced.
+#include "scene/scene_loader.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "scene/scene_keys.hpp"
+#include "scene/scene_override.hpp"
+
+namespace ede {
+namespace {
+
+using namespace scene_detail;
+
+constexpr std::int64_t kMaxDisks = 100'000'000;
+constexpr double kMaxPacking = 0.9069;  // just above pi / (2 sqrt 3) = 0.90690, the hexagonal packing
+
+std::string region_text(const Region& r) {
+  return "[" + number_text(r.x0) + ", " + number_text(r.y0) + ", " + number_text(r.x1) + ", " +
+         number_text(r.y1) + "]";
+}
+
+[[noreturn]] void missing(const Reader& r, std::string_view key, std::string_view why,
+                          std::string_view example) {
+  r.fail(key, "missing; " + std::string(why), "add " + std::string(example));
+}
+
+// A key that only some kinds use is an error with any other kind: it would otherwise be silently ignored.
+void reject_unless(const Reader& r, std::string_view key, bool used, std::string_view kind,
+                   std::string_view users) {
+  if (used || !r.has(key)) return;
+  r.fail(key, "not used with kind = \"" + std::string(kind) + "\" (only with " + std::string(users) + ")",
+         "remove it, or change kind");
+}
+
+void read_box(const Reader& top, Scene& scene) {
+  const Reader box = top.section("box");
+  box.check_keys(sections::box);
+  const auto size =
+      box.numbers("size", 2, "[Lx, Ly]", Bounds::positive()).value_or(std::vector<double>{1, 1});
+  scene.lx = size[0];
+  scene.ly = size[1];
+  const std::size_t boundary = box.choice("boundary", {"walls", "periodic"}).value_or(0);
+  scene.boundary = boundary == 0 ? BoundaryKind::Walls : BoundaryKind::Periodic;
+}
+
+constexpr std::string_view kXiFix = "use a value from 0 (perfectly inelastic) to 1 (elastic)";
+
+// wall_restitution = 0.5, or { left = 1.0, bottom = 0.5 } for some walls (the others stay elastic).
+void read_wall_restitution(const Reader& p, PhysicsSpec& out) {
+  const toml::node* node = p.get("wall_restitution");
+  if (!node || !node->is_table()) {
+    out.wall_restitution = p.number("wall_restitution", Bounds::closed(0, 1), kXiFix).value_or(1);
+    return;
+  }
+  const Reader w = p.section("wall_restitution");
+  w.check_keys(sections::wall_restitution);
+  const char* sides[] = {"left", "right", "bottom", "top"};
+  for (int k = 0; k < 4; ++k) out.walls[std::size_t(k)] = w.number(sides[k], Bounds::closed(0, 1), kXiFix);
+}
+
+// [[physics.pairs]] species = ["bed", "projectile"], restitution = 0.5
+PairRestitution read_pair(const toml::node& node, std::size_t i, const Reader& p) {
+  const std::string path = "physics.pairs[" + std::to_string(i) + "]";
+  const toml::table* table = node.as_table();
+  if (!table) p.fail_node(&node, path, "expected a table", "write each pair as a [[physics.pairs]] table");
+  const Reader r(*table, path, p.origin());
+  r.check_keys(sections::pair);
+  const toml::array* names = r.array("species");
+  if (!names || names->size() != 2 || !names->get(0)->is_string() || !names->get(1)->is_string())
+    r.fail("species", "expected two species names", "write species = [\"bed\", \"projectile\"]");
+  const auto value = r.number("restitution", Bounds::closed(0, 1), kXiFix);
+  if (!value) missing(r, "restitution", "a pair needs its restitution", "restitution = 0.5");
+  return {names->get(0)->value<std::string>().value_or(""), names->get(1)->value<std::string>().value_or(""),
+          *value};
+}
+
+PhysicsSpec read_physics(const Reader& top) {
+  const Reader p = top.section("physics");
+  p.check_keys(sections::physics);
+  PhysicsSpec out;
+  out.restitution = p.number("restitution", Bounds::closed(0, 1), kXiFix).value_or(1);
+  read_wall_restitution(p, out);
+  out.tc = p.number("tc", Bounds::non_negative(), "use 0 (TC model off) or a positive time").value_or(0);
+  if (const auto g = p.numbers("gravity", 2, "[gx, gy]", Bounds::any())) out.gravity = {(*g)[0], (*g)[1]};
+  if (const toml::array* list = p.array("pairs"))
+    for (std::size_t i = 0; i < list->size(); ++i) out.pairs.push_back(read_pair(*list->get(i), i, p));
+  return out;
+}
+
+void read_engine(const Reader& top, Scene& scene) {
+  const Reader e = top.section("engine");
+  e.check_keys(sections::engine);
+  switch (e.choice("scalar", {"float", "double", "long double", "long_double", "float128"}).value_or(1)) {
+    case 0: scene.scalar = ScalarKind::Float; break;
+    case 1: scene.scalar = ScalarKind::Double; break;
+    case 4: scene.scalar = ScalarKind::Float128; break;
+    default: scene.scalar = ScalarKind::LongDouble; break;
+  }
+#if !EDE_HAVE_FLOAT128
+  if (scene.scalar == ScalarKind::Float128)
+    e.fail("scalar", "this ede was built without the __float128 engine (EDE_FLOAT128 off, or a compiler without "
+                     "GCC's libquadmath, such as Clang)",
+           "use \"long double\", or build with GCC and -DEDE_FLOAT128=ON");
+#endif
+  scene.rebuild_interval = static_cast<std::uint64_t>(e.integer("rebuild_interval", 0).value_or(0));
+}
+
+LogSpec read_log(const Reader& top) {
+  const Reader l = top.section("log");
+  l.check_keys(sections::log);
+  LogSpec out;
+  if (const auto k = l.integer("keyframe_interval", 1)) out.keyframe_interval = static_cast<std::uint64_t>(*k);
+  if (const auto c = l.integer("chunk_events", 16, 1 << 24)) out.chunk_events = static_cast<std::uint32_t>(*c);
+  if (const auto z = l.integer("compression_level", 1, 22)) out.compression_level = static_cast<int>(*z);
+  return out;
+}
+
+bool is_name_char(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
+}
+
+std::string read_name(const Reader& sp) {
+  const std::optional<std::string> name = sp.string("name");
+  if (!name) missing(sp, "name", "every species needs a name", "name = \"gas\"");
+  if (name->empty()) sp.fail("name", "the name is empty", "give a name such as \"gas\"");
+  for (char c : *name) {
+    if (!is_name_char(c)) {
+      sp.fail("name",
+              "invalid character " + user_quoted(std::string(1, c)) + " in the name " + user_quoted(*name),
+              "use letters, digits, '_' and '-' only");
+    }
+  }
+  return *name;
+}
+
+// "species 'gas'" for messages about a species, once its name is known to be a good one.
+std::string species_label(const toml::table& species) {
+  const toml::node* node = species.get("name");
+  const std::string_view name = node && node->is_string() ? std::string_view(node->as_string()->get()) : "";
+  if (name.empty() || !std::all_of(name.begin(), name.end(), is_name_char)) return {};
+  return "species '" + std::string(name) + "'";
+}
+
+Region read_region(const Reader& p, const Scene& scene) {
+  const auto v = p.numbers("region", 4, "[x0, y0, x1, y1]", Bounds::any());
+  if (!v) return Region{0, 0, scene.lx, scene.ly};
+  const Region r{(*v)[0], (*v)[1], (*v)[2], (*v)[3]};
+  if (!(r.x0 < r.x1 && r.y0 < r.y1)) {
+    p.fail("region", "the region " + region_text(r) + " is empty (x0 < x1 and y0 < y1 are needed)",
+           "write [x0, y0, x1, y1] with the lower-left corner first");
+  }
+  if (r.x0 < 0 || r.y0 < 0 || r.x1 > scene.lx || r.y1 > scene.ly) {
+    p.fail("region",
+           "the region " + region_text(r) + " is outside the box " + region_text({0, 0, scene.lx, scene.ly}),
+           "keep the region inside the box, or enlarge box.size");
+  }
+  return r;
+}
+
+PlacementSpec read_placement(const Reader& sp, const Scene& scene) {
+  constexpr std::string_view kNames[] = {"random", "lattice", "explicit"};
+  constexpr PlacementKind kKinds[] = {PlacementKind::Random, PlacementKind::Lattice, PlacementKind::Explicit};
+  const Reader p = sp.section("placement");
+  p.check_keys(sections::placement);
+  const std::size_t k = p.choice("kind", {kNames[0], kNames[1], kNames[2]}).value_or(0);
+  reject_unless(p, "region", k != 2, kNames[k], "\"random\" and \"lattice\"");
+  reject_unless(p, "packing_fraction", k != 2, kNames[k], "\"random\" and \"lattice\"");
+  reject_unless(p, "lattice", k == 1, kNames[k], "\"lattice\"");
+  reject_unless(p, "positions", k == 2, kNames[k], "\"explicit\"");
+  PlacementSpec out;
+  out.kind = kKinds[k];
+  out.region = read_region(p, scene);
+  out.packing_fraction = p.number("packing_fraction", Bounds{0, kMaxPacking, true, false},
+                                  "use a fraction of the region's area in (0, 0.9069]");
+  out.lattice = p.choice("lattice", {"hexagonal", "square"}).value_or(0) == 0 ? LatticeKind::Hexagonal
+                                                                              : LatticeKind::Square;
+  if (out.kind == PlacementKind::Explicit) {
+    auto positions = p.pairs("positions", "[x, y]");
+    if (!positions) {
+      missing(p, "positions", "kind = \"explicit\" needs the disks' positions", "positions = [[0.5, 0.5]]");
+    }
+    if (positions->empty()) p.fail("positions", "the list is empty", "give at least one [x, y]");
+    out.positions = std::move(*positions);
+  }
+  return out;
+}
+
+std::int64_t read_count(const Reader& sp, const PlacementSpec& placement) {
+  const std::optional<std::int64_t> count = sp.integer("count", 1);
+  if (placement.kind != PlacementKind::Explicit) {
+    if (!count) missing(sp, "count", "the number of disks is required", "count = 1000");
+    return *count;
+  }
+  const auto listed = static_cast<std::int64_t>(placement.positions.size());
+  if (count && *count != listed) {
+    sp.fail("count",
+            "count = " + std::to_string(*count) + " but placement.positions lists " + std::to_string(listed) +
+                " disks",
+            "make them equal, or remove count (it defaults to the number of positions)");
+  }
+  return listed;
+}
+
+RadiusSpec read_radius_range(const Reader& r) {
+  r.check_keys(sections::radius);
+  const std::string_view fix = "give a positive radius in box units";
+  const auto lo = r.number("min", Bounds::positive(), fix);
+  const auto hi = r.number("max", Bounds::positive(), fix);
+  if (!lo) missing(r, "min", "a radius range needs min and max", "min = 0.004");
+  if (!hi) missing(r, "max", "a radius range needs min and max", "max = 0.006");
+  if (*lo > *hi) {
+    r.fail("max", "max = " + number_text(*hi) + " is less than min = " + number_text(*lo),
+           "swap them, or make max >= min");
+  }
+  return {*lo, *hi, false};
+}
+
+RadiusSpec read_radius(const Reader& sp, const PlacementSpec& placement) {
+  const toml::node* node = sp.get("radius");
+  if (placement.packing_fraction) {
+    if (node) {
+      sp.fail("radius",
+              "radius and placement.packing_fraction are both given; the packing fraction sets the radius",
+              "remove one of them");
+    }
+    return {0, 0, true};
+  }
+  if (!node) {
+    missing(sp, "radius", "the disks need a radius",
+            "radius = 0.005, radius = { min = 0.004, max = 0.006 }, or placement.packing_fraction");
+  }
+  if (node->is_table()) return read_radius_range(sp.section("radius"));
+  const double r =
+      *sp.number("radius", Bounds::positive(), "give a positive radius in box units, e.g. 0.005");
+  return {r, r, false};
+}
+
+MassSpec read_mass(const Reader& sp) {
+  const auto mass = sp.number("mass", Bounds::positive(), "give a positive mass, e.g. 1.0");
+  const auto density = sp.number("density", Bounds::positive(), "give a positive areal density, e.g. 1.0");
+  if (mass && density) {
+    sp.fail("density", "both mass and density are given",
+            "keep mass (the same for every disk) or density (mass = density * pi * r^2), not both");
+  }
+  if (density) return {MassSpec::Kind::PerArea, *density};
+  return {MassSpec::Kind::Fixed, mass.value_or(1)};
+}
+
+void read_velocity_values(const Reader& v, VelocitySpec& out, std::int64_t count) {
+  switch (out.kind) {
+    case VelocityKind::Zero: return;
+    case VelocityKind::Speed:
+      if (!v.has("speed")) missing(v, "speed", "kind = \"speed\" needs the speed", "speed = 1.0");
+      out.speed = *v.number("speed", Bounds::non_negative());
+      return;
+    case VelocityKind::Vector: {
+      const auto vec = v.numbers("vector", 2, "[vx, vy]", Bounds::any());
+      if (!vec) missing(v, "vector", "kind = \"vector\" needs the velocity", "vector = [0.0, -5.0]");
+      out.vector = {(*vec)[0], (*vec)[1]};
+      return;
+    }
+    case VelocityKind::Maxwell:
+      if (!v.has("temperature")) {
+        missing(v, "temperature", "kind = \"maxwell\" needs the temperature kT", "temperature = 1.0");
+      }
+      out.temperature = *v.number("temperature", Bounds::positive());
+      return;
+    case VelocityKind::List: {
+      auto list = v.pairs("values", "[vx, vy]");
+      if (!list) missing(v, "values", "kind = \"list\" needs one [vx, vy] per disk", "values = [[1.0, 0.0]]");
+      if (static_cast<std::int64_t>(list->size()) != count) {
+        v.fail("values",
+               "lists " + std::to_string(list->size()) + " velocities but the species has " +
+                   std::to_string(count) + " disks",
+               "give exactly one [vx, vy] per disk");
+      }
+      out.list = std::move(*list);
+      return;
+    }
+  }
+}
+
+VelocitySpec read_velocity(const Reader& sp, std::int64_t count) {
+  constexpr std::string_view kNames[] = {"zero", "speed", "vector", "maxwell", "list"};
+  constexpr VelocityKind kKinds[] = {VelocityKind::Zero, VelocityKind::Speed, VelocityKind::Vector,
+                                     VelocityKind::Maxwell, VelocityKind::List};
+  constexpr std::string_view kKeys[] = {"", "speed", "vector", "temperature", "values"};
+  const Reader v = sp.section("velocity");
+  v.check_keys(sections::velocity);
+  const std::size_t k = v.choice("kind", {kNames[0], kNames[1], kNames[2], kNames[3], kNames[4]}).value_or(0);
+  for (std::size_t other = 1; other < std::size(kKeys); ++other) {
+    reject_unless(v, kKeys[other], other == k, kNames[k], "\"" + std::string(kNames[other]) + "\"");
+  }
+  VelocitySpec out;
+  out.kind = kKinds[k];
+  read_velocity_values(v, out, count);
+  return out;
+}
+
+// Explicit positions: the centre inside the box, and with walls at least the smallest radius from them.
+void check_positions(const Reader& sp, const SpeciesSpec& s, const Scene& scene) {
+  const Reader p = sp.section("placement");
+  const double margin = scene.boundary == BoundaryKind::Walls ? s.radius.min : 0;
+  for (std::size_t i = 0; i < s.placement.positions.size(); ++i) {
+    const auto [x, y] = s.placement.positions[i];
+    const bool inside = x >= margin && y >= margin && x <= scene.lx - margin && y <= scene.ly - margin;
+    if (inside) continue;
+    p.fail_item("positions", i,
+                "[" + number_text(x) + ", " + number_text(y) + "] puts the disk (radius " +
+                    number_text(s.radius.min) + ") outside the box " +
+                    region_text({0, 0, scene.lx, scene.ly}),
+                "move it inside; with walls, keep the centre at least one radius from each wall");
+  }
+}
+
+void check_unique_name(const Reader& sp, const std::string& name, const std::vector<SpeciesSpec>& earlier) {
+  for (std::size_t j = 0; j < earlier.size(); ++j) {
+    if (earlier[j].name != name) continue;
+    sp.fail(
+        "name",
+        "duplicate species name " + user_quoted(name) + " (species[" + std::to_string(j) + "] has it too)",
+        "give every species its own name");
+  }
+}
+
+void check_total(const Reader& sp, std::int64_t count, const std::vector<SpeciesSpec>& earlier) {
+  std::int64_t total = 0;
+  for (const SpeciesSpec& e : earlier) total += e.count;  // each partial total is <= kMaxDisks: no overflow
+  if (count <= kMaxDisks - total) return;
+  const auto sum = static_cast<std::uint64_t>(total) + static_cast<std::uint64_t>(count);  // < 2^64
+  sp.fail("count",
+          "the scene would hold " + std::to_string(sum) + " disks in all, more than the limit of " +
+              std::to_string(kMaxDisks),
+          "use fewer disks: each costs a few hundred bytes, so 10^8 disks already need tens of GB of memory");
+}
+
+SpeciesSpec read_species(const toml::node& node, std::size_t i, const Reader& top, const Scene& scene) {
+  const std::string path = "species[" + std::to_string(i) + "]";
+  const toml::table* table = node.as_table();
+  if (!table) {
+    top.fail_node(&node, path, "expected a table, got " + describe(node),
+                  "write each species as a [[species]] table");
+  }
+  const Reader sp(*table, path, top.origin(), species_label(*table));
+  sp.check_keys(sections::species);
+  SpeciesSpec s;
+  s.name = read_name(sp);
+  check_unique_name(sp, s.name, scene.species);
+  s.placement = read_placement(sp, scene);
+  s.count = read_count(sp, s.placement);
+  check_total(sp, s.count, scene.species);
+  s.radius = read_radius(sp, s.placement);
+  s.mass = read_mass(sp);
+  s.velocity = read_velocity(sp, s.count);
+  if (s.placement.kind == PlacementKind::Explicit) check_positions(sp, s, scene);
+  return s;
+}
+
+void read_all_species(const Reader& top, Scene& scene) {
+  const toml::node* node = top.get("species");
+  if (node && node->is_table()) {
+    top.fail("species", "expected an array of tables, got a table", "write [[species]] with double brackets");
+  }
+  const toml::array* list = top.array("species");
+  if (!list || list->empty()) {
+    top.fail("species", "the scene has no species",
+             "add a [[species]] table with a name, a count and a radius");
+  }
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    scene.species.push_back(read_species(*list->get(i), i, top, scene));
+  }
+}
+
+StopSpec read_stop(const Reader& top) {
+  const Reader s = top.section("stop");
+  s.check_keys(sections::stop);
+  StopSpec out;
+  out.time = s.number("time", Bounds::positive());
+  if (const auto events = s.integer("events", 1)) out.events = static_cast<std::uint64_t>(*events);
+  out.collisions_per_particle = s.number("collisions_per_particle", Bounds::positive());
+  out.energy_fraction = s.number("energy_fraction", Bounds::open(0, 1));
+  if (!out.time && !out.events && !out.collisions_per_particle && !out.energy_fraction) {
+    s.fail_here("no stop condition, so the run would never end",
+                "add [stop] with time = 10.0, events = 1000000, collisions_per_particle = 50 or "
+                "energy_fraction = 0.1");
+  }
+  return out;
+}
+
+std::optional<double> read_sampling(const Reader& top) {
+  const Reader s = top.section("sampling");
+  s.check_keys(sections::sampling);
+  return s.number("interval", Bounds::positive(), "give a positive time between samples, e.g. 0.1");
+}
+
+ActionSpec read_action(const toml::node& node, std::size_t i, const Reader& top) {
+  const std::string path = "actions[" + std::to_string(i) + "]";
+  const toml::table* table = node.as_table();
+  if (!table) {
+    top.fail_node(&node, path, "expected a table, got " + describe(node),
+                  "write each action as an [[actions]] table");
+  }
+  const Reader a(*table, path, top.origin());
+  a.check_keys(sections::action);
+  const auto time = a.number("time", Bounds::positive());
+  if (!time) missing(a, "time", "an action needs the time at which it happens", "time = 5.0");
+  if (!a.choice("kind", {"reverse_velocities"})) {
+    missing(a, "kind", "an action needs a kind", "kind = \"reverse_velocities\"");
+  }
+  return {*time, ActionKind::ReverseVelocities};
+}
+
+std::vector<ActionSpec> read_actions(const Reader& top) {
+  std::vector<ActionSpec> out;
+  if (const toml::array* list = top.array("actions")) {
+    for (std::size_t i = 0; i < list->size(); ++i) out.push_back(read_action(*list->get(i), i, top));
+  }
+  std::stable_sort(out.begin(), out.end(),
+                   [](const ActionSpec& a, const ActionSpec& b) { return a.time < b.time; });
+  return out;
+}
+
+// Rules that span tables: pair restitution names real species; gravity needs walls (in a periodic box
+// everything would fall forever) and cannot stop on kinetic energy (it changes between collisions).
+void check_physics(const Reader& top, const Scene& scene) {
+  const Reader p = top.section("physics");
+  for (const PairRestitution& pair : scene.physics.pairs)
+    for (const std::string& name : {pair.a, pair.b}) {
+      bool found = false;
+      for (const SpeciesSpec& sp : scene.species) found = found || sp.name == name;
+      if (!found) {
+        std::string known;
+        for (const SpeciesSpec& sp : scene.species) known += (known.empty() ? "" : ", ") + sp.name;
+        p.fail("pairs", "there is no species '" + name + "'", "use the names of the species: " + known);
+      }
+    }
+  if (scene.physics.has_gravity() && scene.boundary == BoundaryKind::Periodic)
+    p.fail("gravity", "gravity needs walls: in a periodic box every disk would fall forever",
+           "use box.boundary = \"walls\", or remove gravity");
+  if (scene.physics.has_gravity() && scene.stop.energy_fraction)
+    top.section("stop").fail("energy_fraction",
+                             "with gravity the kinetic energy changes between collisions, so it cannot stop a run",
+                             "stop on time (stop.time) or on events");
+}
+
+Scene scene_from_tree(const toml::table& root, const Origin& origin) {
+  const Reader top(root, "", origin);
+  top.check_keys(sections::root);
+  Scene scene;
+  scene.seed = static_cast<std::uint64_t>(top.integer("seed", 0).value_or(1));
+  read_box(top, scene);
+  scene.physics = read_physics(top);
+  read_engine(top, scene);
+  scene.log = read_log(top);
+  read_all_species(top, scene);
+  scene.stop = read_stop(top);
+  scene.sample_interval = read_sampling(top);
+  scene.actions = read_actions(top);
+  check_physics(top, scene);
+  return scene;
+}
+
+// The tree as TOML, headed by comments saying where it came from; it reads back to the same Scene.
+std::string effective_text(const toml::table& root, const Origin& origin) {
+  std::ostringstream out;
+  out << "# effective scene: " << user_quoted(origin.source_name) << "\n";
+  for (const AppliedOverride& o : origin.overrides) {
+    out << "# --set #" << o.number << " " << user_quoted(o.text) << "\n";
+  }
+  out << to_toml(root);
+  return out.str();
+}
+
+std::string syntax_message(const toml::parse_error& e, const std::string& source_name) {
+  const toml::source_position at = e.source().begin;
+  std::string where = source_name;
+  if (at.line > 0) where += ":" + std::to_string(at.line) + ":" + std::to_string(at.column);
+  return where + ": error: TOML syntax: " + std::string(e.description()) +
+         ". Fix: correct the TOML at this position (the format is described in docs/scene-format.md).";
+}
+
+}  // namespace
+
+Result<Scene> parse_scene_text(const std::string& text, const std::string& source_name,
+                               const std::vector<Override>& overrides) {
+  try {
+    toml::table root = toml::parse(std::string_view(text), std::string_view(source_name));
+    const Origin origin{source_name, apply_overrides(root, overrides, source_name)};
+    Scene scene = scene_from_tree(root, origin);
+    scene.source_name = source_name;
+    scene.source_text = effective_text(root, origin);
+    return scene;
+  } catch (const toml::parse_error& e) {
+    return Error{syntax_message(e, source_name)};
+  } catch (const SceneError& e) {
+    return Error{e.message};
+  } catch (const std::exception& e) {  // std::bad_alloc on absurd input: still one message, no crash
+    return Error{source_name + ": error: cannot load the scene (" + e.what() + ")."};
+  }
+}
+
+Result<Scene> load_scene_file(const std::string& path, const std::vector<Override>& overrides) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    return Error{path +
+                 ": error: this is a directory, not a scene file. Fix: give the path of a .toml file."};
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  if (in) text << in.rdbuf();
+  if (!in || in.bad()) {
+    const bool exists = std::filesystem::exists(path, ec);
+    return Error{path + ": error: cannot " + (exists ? "read" : "find") +
+                 " the scene file. Fix: check the path" + (exists ? " and the file's permissions." : ".")};
+  }
+  return parse_scene_text(text.str(), path, overrides);
+}
+
+}  // namespace ede

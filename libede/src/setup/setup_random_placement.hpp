@@ -1,0 +1,38 @@
+// Random sequential addition (RSA): disks placed one at a time at uniform random positions, a candidate
+// rejected if it overlaps any disk placed before (this species' or an earlier one's), never moved after.
+//
+// Candidates are uniform over the centres that keep the whole disk in the region; along a dimension in
+// which the box is periodic and the region spans the whole box, centres are uniform in [0, L) and the disk
+// may straddle the boundary (overlap checks always use the periodic image in a periodic box). Disks of
+// different radii are placed largest first: big disks find room while the region is empty. RSA jams near
+// a packing fraction of 0.547 (monodisperse); denser packings need a lattice.
+// Rejected: placing on a lattice and melting it with a short simulation (needs the engine in setup) and
+// Lubachevsky-Stillinger growth (dense, but a simulation of its own, and hard to make deterministic
+// across scalar types).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "ede/error.hpp"
+#include "core/rng.hpp"
+#include "ede/scene.hpp"
+#include "setup/placement_grid.hpp"
+
+namespace ede::setup_detail {
+
+struct RandomPlacement {
+  Region region;
+  double lx = 1, ly = 1;
+  bool periodic_box = false;
+};
+
+// The attempt budget for `count` disks: max(10^6, 2000 * count).
+std::int64_t random_attempt_budget(std::int64_t count);
+
+// Places disks of the given radii. On success `radii` is sorted largest first, x and y hold the centres in
+// that order, and every disk has been inserted into `grid`. On failure the message says how far it got.
+Status place_random(const RandomPlacement& where, std::vector<double>& radii, PlacementGrid& grid, Rng& rng,
+                    std::vector<double>& x, std::vector<double>& y);
+
+}  // namespace ede::setup_detail

@@ -1,0 +1,136 @@
+// The log's building blocks: framing, CRC, byte columns, scalar bytes and ordered keys, SHA-256.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include "log/byte_columns.hpp"
+#include "core/crc32.hpp"
+#include "log/log_framing.hpp"
+#include "log/scalar_bytes.hpp"
+#include "core/sha256.hpp"
+
+using namespace ede;
+
+TEST_CASE("crc32 and sha256 match their reference vectors", "[log][codec]") {
+  CHECK(crc32("123456789", 9) == 0xCBF43926u);  // the standard check value
+  Sha256 empty;
+  CHECK(Sha256::hex(empty.finish()) == "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+  Sha256 abc;
+  abc.update("abc", 3);
+  CHECK(Sha256::hex(abc.finish()) == "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+  Sha256 long_input;  // 56 bytes: padding spills into a second block
+  const char* m = "abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq";
+  long_input.update(m, std::strlen(m));
+  CHECK(Sha256::hex(long_input.finish()) == "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
+}
+
+TEST_CASE("record headers and trailers round-trip and refuse damage", "[log][codec]") {
+  logfmt::RecordHeader h;
+  h.kind = logfmt::RecordKind::Chunk;
+  h.payload_size = 12345;
+  h.first_event = 1u << 20;
+  h.event_count = 16384;
+  h.time_first = 0.25;
+  h.time_last = 0.5;
+  h.resumable = true;
+  unsigned char bytes[logfmt::kRecordHeaderSize];
+  logfmt::encode_record_header(h, bytes);
+  std::string why;
+  const auto back = logfmt::decode_record_header(bytes, why);
+  REQUIRE(back);
+  CHECK(back->kind == h.kind);
+  CHECK(back->payload_size == h.payload_size);
+  CHECK(back->first_event == h.first_event);
+  CHECK(back->event_count == h.event_count);
+  CHECK(back->time_first == h.time_first);
+  CHECK(back->resumable);
+  for (std::size_t k = 0; k < sizeof bytes; ++k)
+    for (int bit = 0; bit < 8; ++bit) {
+      unsigned char flipped[sizeof bytes];
+      std::memcpy(flipped, bytes, sizeof bytes);
+      flipped[k] ^= static_cast<unsigned char>(1 << bit);
+      REQUIRE_FALSE(logfmt::decode_record_header(flipped, why));  // the CRC (or the marker) catches every flip
+    }
+  unsigned char tr[logfmt::kTrailerSize];
+  logfmt::encode_trailer({4096, 8192}, tr);
+  const auto t = logfmt::decode_trailer(tr);
+  REQUIRE(t);
+  CHECK(t->index_offset == 4096);
+  CHECK(t->trailer_offset == 8192);
+  tr[3] ^= 1;
+  CHECK_FALSE(logfmt::decode_trailer(tr));
+}
+
+TEST_CASE("the file header refuses other files and other versions", "[log][codec]") {
+  unsigned char h[logfmt::kFileHeaderSize];
+  logfmt::encode_file_header(h);
+  std::uint32_t version = 0;
+  CHECK(logfmt::check_file_header(h, version).empty());
+  CHECK(version == logfmt::kFormatVersion);
+  h[8] = 2;  // a newer version
+  CHECK(logfmt::check_file_header(h, version).find("version 2") != std::string::npos);
+  std::memcpy(h, "seed = 1", 8);
+  CHECK(logfmt::check_file_header(h, version).find("not an ede event log") != std::string::npos);
+}
+
+TEST_CASE("varints and zigzag round-trip; overlong and cut varints are refused", "[log][codec]") {
+  ByteWriter w;
+  const u128 values[] = {0, 1, 127, 128, 300, (u128(1) << 64) + 5, ~u128(0)};
+  for (const u128 v : values) w.varint(v);
+  for (const i128 v : {i128(0), i128(-1), i128(1), -i128(1) << 100, i128(123456789)}) w.varint(zigzag(v));
+  ByteReader r(w.bytes().data(), w.bytes().size());
+  for (const u128 v : values) {
+    u128 got = 0;
+    REQUIRE(r.varint(got));
+    CHECK(got == v);
+  }
+  for (const i128 v : {i128(0), i128(-1), i128(1), -i128(1) << 100, i128(123456789)}) {
+    u128 got = 0;
+    REQUIRE(r.varint(got));
+    CHECK(unzigzag(got) == v);
+  }
+  CHECK(r.at_end());
+  const unsigned char too_big[] = {0xFF, 0xFF, 0xFF, 0xFF, 0x7F};  // 35 bits into a 32-bit field
+  ByteReader r32(too_big, sizeof too_big);
+  u128 v = 0;
+  CHECK_FALSE(r32.varint(v, 32));
+  const unsigned char cut[] = {0x80, 0x80};
+  ByteReader rc(cut, sizeof cut);
+  CHECK_FALSE(rc.varint(v));
+}
+
+TEST_CASE("byte-plane shuffling round-trips", "[log][codec]") {
+  std::vector<unsigned char> in(10 * 8);
+  for (std::size_t k = 0; k < in.size(); ++k) in[k] = static_cast<unsigned char>(k * 37);
+  const auto s = shuffle_bytes(in, 8);
+  CHECK(s[1] == in[8]);  // second value's first byte comes second
+  std::vector<unsigned char> back;
+  REQUIRE(unshuffle_bytes(s.data(), s.size(), 8, back));
+  CHECK(back == in);
+  CHECK_FALSE(unshuffle_bytes(s.data(), 7, 8, back));
+}
+
+TEMPLATE_TEST_CASE("ordered keys preserve order and invert exactly", "[log][codec]", float, double, long double) {
+  using T = TestType;
+  const T values[] = {-std::numeric_limits<T>::max(), T(-1e10), T(-1), T(-1e-30), T(-0.0), T(0), T(1e-30),
+                      T(0.1), T(1), T(1) + std::numeric_limits<T>::epsilon(), T(3e10), std::numeric_limits<T>::max()};
+  for (std::size_t k = 0; k < std::size(values); ++k) {
+    const T back = from_ordered_key<T>(ordered_key(values[k]));
+    CHECK(std::memcmp(&back, &values[k], kScalarWidth<T>) == 0);
+    if (k > 0 && values[k - 1] < values[k]) CHECK(ordered_key(values[k - 1]) < ordered_key(values[k]));
+  }
+  // Neighbouring values differ by one in key space: deltas of nearby times are tiny.
+  const T x = T(0.75);
+  CHECK(ordered_key(std::nextafter(x, T(1))) - ordered_key(x) == 1);
+}
+
+TEST_CASE("long double is stored without its padding bytes", "[log][codec]") {
+  long double a = 1.5L, b = 1.5L;
+  std::memset(reinterpret_cast<unsigned char*>(&a) + 10, 0xAB, sizeof(long double) - 10);  // garbage padding
+  unsigned char ba[10], bb[10];
+  scalar_to_bytes(a, ba);
+  scalar_to_bytes(b, bb);
+  CHECK(std::memcmp(ba, bb, 10) == 0);
+  CHECK(scalar_from_bytes<long double>(ba) == 1.5L);
+}
