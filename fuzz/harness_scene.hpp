@@ -12,7 +12,7 @@
 #include <string>
 
 #include "engine/engine.hpp"
-#include "scene/scene_loader.hpp"
+#include "ede/scene.hpp"
 #include "setup/setup.hpp"
 
 namespace ede::fuzz {

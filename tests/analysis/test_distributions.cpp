@@ -8,7 +8,7 @@
 #include <limits>
 #include <vector>
 
-#include "analysis/distributions.hpp"
+#include "ede/analysis.hpp"
 #include "core/rng.hpp"
 
 using namespace ede;

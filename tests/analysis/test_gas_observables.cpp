@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "analysis/gas_observables.hpp"
+#include "ede/analysis.hpp"
 
 using namespace ede;
 

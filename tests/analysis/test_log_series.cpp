@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "analysis/distributions.hpp"
-#include "analysis/gas_observables.hpp"
+#include "ede/analysis.hpp"
+#include "ede/analysis.hpp"
 #include "analysis/log_series.hpp"
 #include "log/log_stats.hpp"
-#include "scene/scene_loader.hpp"
+#include "ede/scene.hpp"
 #include "setup/setup.hpp"
 #include "log_test_support.hpp"
 

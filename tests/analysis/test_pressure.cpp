@@ -9,7 +9,7 @@
 #include <cmath>
 #include <random>
 
-#include "analysis/block_average.hpp"
+#include "ede/analysis.hpp"
 #include "analysis/pressure.hpp"
 #include "log_test_support.hpp"
 

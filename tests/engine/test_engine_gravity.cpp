@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "scene/scene_loader.hpp"
+#include "ede/scene.hpp"
 #include "engine/engine_core.hpp"
 #include "log_test_support.hpp"
 

@@ -12,7 +12,7 @@
 #include <thread>
 
 #include "replay/log_digest.hpp"
-#include "scene/scene_loader.hpp"
+#include "ede/scene.hpp"
 #include "setup/setup.hpp"
 #include "log_test_support.hpp"
 #include "tool_runner.hpp"

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene_loader.hpp"
+#include "ede/scene.hpp"
 
 namespace {
 

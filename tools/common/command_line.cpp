@@ -3,7 +3,15 @@
 
 #include <vector>
 
+#include "ede/ede.hpp"
+
 namespace ede::tools {
+
+void add_version_flags(CLI::App& app, const std::string& tool) {
+  const std::string text = tool + ", ede " + version();
+  app.set_version_flag("--version", text, "print the version and exit");
+  for (CLI::App* sub : app.get_subcommands({})) add_version_flags(*sub, tool + " " + sub->get_name());
+}
 
 std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
   try {
@@ -19,7 +27,7 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, cons
   std::string inserted = default_subcommand;
   if (argc > 1) {
     const std::string first = argv[1];
-    bool known = first == "-h" || first == "--help";
+    bool known = first == "-h" || first == "--help" || first == "--version";
     for (const CLI::App* sub : app.get_subcommands({})) known = known || first == sub->get_name();
     if (!known) args.insert(args.begin() + 1, inserted.data());
   }

@@ -1,4 +1,4 @@
-// Parsing a tool's command line with CLI11, the same way in every tool: --help prints the help and exits
+// Parsing a tool's command line with CLI11, the same way in every tool: --help and --version print and exit
 // 0; a command line CLI11 rejects prints CLI11's message and exits 2, the status every tool gives a bad
 // command line. Rejected: CLI11_PARSE, which exits with CLI11's own codes instead (106, 109, ...).
 #pragma once
@@ -8,6 +8,9 @@
 #include <string>
 
 namespace ede::tools {
+
+// Adds --version to the app and every subcommand (call after adding them): "ede-sim, ede 0.1.0".
+void add_version_flags(CLI::App& app, const std::string& tool);
 
 // Parses; the exit status when the program should stop here (0 after --help, 2 after a parse error),
 // nothing when it should go on.

@@ -1,7 +1,7 @@
 // The accuracy study's settings and scene loading; see accuracy_settings.hpp.
 #include "accuracy_settings.hpp"
 
-#include "scene/scene_loader.hpp"
+#include "ede/scene.hpp"
 #include "setup/setup.hpp"
 
 namespace ede::bench {

@@ -36,7 +36,7 @@ bool has_log(Precision p);                // the log writer exists for every typ
 // rows are there for how far round-off can be pushed, and the roots differ by round-off alone.
 std::vector<Setting> study_settings();
 
-// Calls f.template operator()<T>() with the setting's scalar type, like tools::with_scalar.
+// Calls f.template operator()<T>() with the setting's scalar type, like with_scalar.
 template <class F>
 decltype(auto) with_precision(Precision p, F&& f) {
   switch (p) {

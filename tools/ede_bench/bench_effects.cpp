@@ -21,7 +21,7 @@
 #include "bench_common.hpp"
 #include "cpu_cycles.hpp"
 #include "engine/engine.hpp"
-#include "scene/scene_loader.hpp"
+#include "ede/scene.hpp"
 #include "setup/setup.hpp"
 #include "timed_run.hpp"
 

@@ -14,9 +14,9 @@
 #include "bench_common.hpp"
 #include "cpu_cycles.hpp"
 #include "engine/engine.hpp"
-#include "scene/scene_loader.hpp"
+#include "ede/scene.hpp"
 #include "setup/setup.hpp"
-#include "scalar_dispatch.hpp"
+#include "core/scalar_dispatch.hpp"
 #include "timed_run.hpp"
 
 namespace ede::bench {
@@ -43,7 +43,7 @@ int measure_in_child(const std::string& path, std::uint64_t events, Algorithm al
   const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   EngineOptions options = engine_options_from(scene.value(), initial.value().size());
   options.algorithm = algorithm;
-  return tools::with_engine_scalar(scene.value().scalar, [&]<class T>() {
+  return with_engine_scalar(scene.value().scalar, [&]<class T>() {
     auto made = make_engine<T>(initial.value(), options);
     if (!made) return out = made.error().message, 1;
     std::ostringstream o;

@@ -22,7 +22,7 @@
 #include "log/log_reader.hpp"
 #include "log/log_writer.hpp"
 #include "replay/replay.hpp"
-#include "scene/scene_loader.hpp"
+#include "ede/scene.hpp"
 #include "setup/setup.hpp"
 
 namespace ede::bench {

@@ -18,9 +18,9 @@
 #include "cpu_cycles.hpp"
 #include "log/log_reader.hpp"
 #include "replay/replay.hpp"
-#include "scene/scene_loader.hpp"
+#include "ede/scene.hpp"
 #include "setup/setup.hpp"
-#include "scalar_dispatch.hpp"
+#include "core/scalar_dispatch.hpp"
 
 namespace ede::bench {
 
@@ -94,7 +94,7 @@ int run_child(const RunConfig& c, std::string& out) {
     return out = c.scene + ": float128 runs write no event log (the log format holds float, double and long "
                            "double); benchmark them with ede-bench speed",
            1;
-  return tools::with_scalar(scene.value().scalar, [&]<class T>() {
+  return with_scalar(scene.value().scalar, [&]<class T>() {
     return timed_run<T>(c, scene.value(), initial.value(), options, out);
   });
 }
@@ -178,7 +178,7 @@ int seek_child(const std::string& path, std::string& out) {
   if (!log) return out = log.error().message, 1;
   const double open_seconds = seconds_since(t0);
   std::shared_ptr<const LogReader> reader = log.value();
-  return tools::with_scalar(reader->header().scalar,
+  return with_scalar(reader->header().scalar,
                             [&]<class T>() { return seek_child_typed<T>(reader, open_seconds, out); });
 }
 

@@ -10,7 +10,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "scene/scene_loader.hpp"
+#include "ede/scene.hpp"
 #include "setup/setup.hpp"
 #include "engine/engine_factory.hpp"
 #include "timed_run.hpp"

@@ -12,7 +12,7 @@
 #include "crater_tool.hpp"
 #include "open_log.hpp"
 #include "log/log_reader.hpp"
-#include "scalar_dispatch.hpp"
+#include "core/scalar_dispatch.hpp"
 
 namespace ede::crater_tool {
 
@@ -83,8 +83,8 @@ Result<MeasuredLog> measure_log(const std::string& path, const MeasureOptions& o
   auto log = ede::tools::open_log_warning("ede-crater", path);
   if (!log) return log.error();
   std::shared_ptr<const LogReader> reader = log.value();
-  auto crater = tools::with_scalar(reader->header().scalar, [&]<class T>() -> Result<CraterMeasurement> {
-    CraterRequest<T> req;
+  auto crater = with_scalar(reader->header().scalar, [&]<class T>() -> Result<CraterMeasurement> {
+    CraterRequest req;
     req.energy_fraction = o.energy_fraction;
     req.bed_species = o.bed_species;
     req.settings = settings.value();
@@ -102,7 +102,7 @@ Result<MeasuredLog> measure_log(const std::string& path, const MeasureOptions& o
         return Error{"--before '" + o.before + "' is not a time: give a number >= 0 (such as 0.4)"};
       req.before = t.value;
     }
-    return measure_crater<T>(reader, req);
+    return measure_crater(reader, req);
   });
   if (!crater) return crater.error();
   MeasuredLog m{std::move(crater).value(), {}, reader->header().disks, to_string(reader->header().scalar)};

@@ -21,7 +21,7 @@
 #include <set>
 
 #include "crater_tool.hpp"
-#include "scene/scene_loader.hpp"
+#include "ede/scene.hpp"
 #include "plot_runner.hpp"
 
 namespace ede::crater_tool {

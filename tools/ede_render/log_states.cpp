@@ -13,7 +13,7 @@
 #include "log/log_reader.hpp"
 #include "replay/replay.hpp"
 #include "exact_text.hpp"
-#include "scalar_dispatch.hpp"
+#include "core/scalar_dispatch.hpp"
 
 namespace ede::render {
 
@@ -114,7 +114,7 @@ Result<std::unique_ptr<LogStates>> LogStates::open(const std::string& path) {
   auto log = ede::tools::open_log_warning("ede-render", path);
   if (!log) return log.error();
   std::shared_ptr<LogReader> reader = log.value();
-  return tools::with_scalar(reader->header().scalar, [&]<class T>() -> Result<std::unique_ptr<LogStates>> {
+  return with_scalar(reader->header().scalar, [&]<class T>() -> Result<std::unique_ptr<LogStates>> {
     auto replay = Replay<T>::create(reader);
     if (!replay) return replay.error();
     auto states = std::make_unique<TypedLogStates<T>>(reader, std::move(replay).value());

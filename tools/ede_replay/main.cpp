@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
   };
 
   // `ede-replay LOG --at T` is `ede-replay state LOG --at T`.
+  ede::tools::add_version_flags(app, "ede-replay");
   if (const auto stop = ede::tools::parse_command_line(app, argc, argv, "state")) return *stop;
   for (const auto& [name, run] : commands)
     if (app.got_subcommand(name)) return run();

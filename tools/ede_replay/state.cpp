@@ -2,13 +2,10 @@
 //
 // The time is read in the log's own scalar type, so `--at 0.5` in a float log means the float nearest 0.5,
 // exactly what a float engine stopping at stop.time = 0.5 reaches; `--at end` is the time the run reached.
-// Replay<T> seeks from the nearest keyframe; the CSV is written by the same function as ede-sim
-// --final-state, so the two are byte-identical at the same time.
-#include <memory>
+// The CSV is written by the same function as ede-sim --final-state, so the two are byte-identical at the
+// same time.
 #include <optional>
-#include <string>
 
-#include "core/state_csv.hpp"
 #include "replay_tool.hpp"
 
 namespace ede::replay_tool {
@@ -21,34 +18,16 @@ struct StateOptions {
   bool csv = false;  // CSV is the only format; the flag is accepted for scripts that spell it out
 };
 
-template <class T>
-int write_state(const StateOptions& opt, const std::shared_ptr<LogReader>& log) {
-  auto made = Replay<T>::create(log);
-  if (!made) return fail(made.error().message);
-  Replay<T>& replay = *made.value();
-  // The end of a log cut short is its last event: seeking to it by index is exact in every scalar type
-  // (Replay::final_time() gives that time rounded to double there, which loses events in long double).
-  const bool to_last_event = opt.at == "end" && !log->complete();
-  if (opt.event || to_last_event) {
-    if (Status s = replay.seek_event(opt.event.value_or(log->total_events())); !s) return fail(s.error().message);
-  } else {
-    T t = replay.final_time();
-    if (opt.at != "end") {
-      auto parsed = parse_time<T>(opt.at, "--at");
-      if (!parsed) return fail(parsed.error().message);
-      t = parsed.value();
-    }
-    if (t > replay.final_time())
-      return fail(log->path() + ": --at " + exact(t) +
-                  " is after the end of the log (t = " + exact(replay.final_time()) +
-                  (log->complete() ? "" : "; the log is incomplete") + "); --at end gives the last state");
-    if (Status s = replay.seek_time(t); !s) return fail(s.error().message);
-  }
-  Output out(opt.output);
-  if (!out.file()) return fail(out.error());
-  write_state_csv(out.file(), replay.particles(), replay.time(), log->header().species_names);
-  if (Status s = out.close(); !s) return fail(s.error().message);
-  return 0;
+Result<State> state_of(const Log& log, const StateOptions& opt) {
+  if (opt.event) return log.state_at_event(*opt.event);
+  if (opt.at == "end") return log.state_at_end();
+  auto t = parse_time(log, opt.at, "--at");
+  if (!t) return t.error();
+  if (t.value() > log.info().end_time)
+    return Error{log.info().path + ": --at " + exact(log, t.value()) + " is after the end of the log (t = " +
+                 exact(log, log.info().end_time) + (log.info().complete ? "" : "; the log is incomplete") +
+                 "); --at end gives the last state"};
+  return log.state_at(t.value());
 }
 
 int run_state(const StateOptions& opt) {
@@ -56,7 +35,14 @@ int run_state(const StateOptions& opt) {
     return usage_error("state: give either --at T (or --at end) or --event N");
   auto log = open_log(opt.log);
   if (!log) return fail(log.error().message);
-  return tools::with_scalar(log.value()->header().scalar, [&]<class T>() { return write_state<T>(opt, log.value()); });
+  auto state = state_of(log.value(), opt);
+  if (!state) return fail(state.error().message);
+  if (opt.output.empty()) {
+    write_state_csv(stdout, state.value());
+    return std::fflush(stdout) == 0 && !std::ferror(stdout) ? 0 : fail("error while writing <stdout>");
+  }
+  if (Status s = write_state_csv(opt.output, state.value()); !s) return fail(s.error().message);
+  return 0;
 }
 
 }  // namespace

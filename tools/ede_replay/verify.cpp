@@ -1,20 +1,6 @@
-// ede-replay verify: re-run the scene a log records and compare every event with the log, bit for bit.
-//
-// The scene comes from the header (the effective TOML, after overrides), set up and run again exactly as
-// ede-sim does. A sink compares each event the engine emits with the log's next one (Replay::next_event):
-// time, kind, disks, and the post-event velocities the kind has; at the start it compares the initial
-// state with the log's first keyframe, and at the end the event total, the final time and the status.
-// The keyframes are checked too, where the writer took them: a keyframe that disagrees with the run would
-// make seeks (ede-replay --at) or a resume (ede-sim --resume) wrong even when every event is right.
-// The first difference stops the run (checked between slices of the run, so a long run is not finished
-// for nothing) and is printed with both values: exit 1. Identical: exit 0. A log cut short (killed run)
-// is verified as far as it goes and says so.
-#include <memory>
-#include <string>
-
-#include "engine/engine.hpp"
-#include "scene/scene_loader.hpp"
-#include "setup/setup.hpp"
+// ede-replay verify: re-run the scene a log records and compare every event with the log, bit for bit
+// (ede::Log::verify does the work). Exit 0 if identical, 1 at the first difference or for a log that
+// cannot be read.
 #include "progress.hpp"
 #include "replay_tool.hpp"
 
@@ -22,293 +8,28 @@ namespace ede::replay_tool {
 
 namespace {
 
-struct VerifyOptions {
+struct VerifyCliOptions {
   std::string log;
   bool quiet = false;
 };
 
-template <class T>
-ReplayedEvent<T> as_replayed(const EventOutcome<T>& o, std::uint64_t index) {
-  return {index, o.time, o.kind, o.i, o.j, o.vix, o.viy, o.vjx, o.vjy};
-}
-
-// The first field in which two disk records differ, or "".
-template <class T>
-std::string record_difference(const Disk<T>& a, const Disk<T>& b) {
-  if (!same_bits(a.x, b.x)) return "x";
-  if (!same_bits(a.y, b.y)) return "y";
-  if (!same_bits(a.vx, b.vx)) return "vx";
-  if (!same_bits(a.vy, b.vy)) return "vy";
-  if (!same_bits(a.t, b.t)) return "t";
-  return "";
-}
-
-template <class T>
-std::string record_text(const Disk<T>& d) {
-  return "x = (" + exact(d.x) + ", " + exact(d.y) + "), v = (" + exact(d.vx) + ", " + exact(d.vy) +
-         "), t = " + exact(d.t);
-}
-
-// Compares the engine's events with the log's as they happen, and the log's keyframes with the engine's
-// state where the writer took them: the state of the keyframe a seek uses at each event index (read with
-// a second Replay, `probe`), and everything a resume reads from each resumable keyframe (resume_point,
-// checked at the engine's rebuilds, where the writer wrote them). The first difference ends it all.
-template <class T>
-class Comparer final : public Sink<T> {
- public:
-  Comparer(Replay<T>& replay, Replay<T>& probe, const LogReader& log) : replay_(replay), probe_(probe), log_(log) {}
-
-  void on_start(T, const Particles<T>& p) override {
-    const Particles<T>& q = replay_.particles();
-    for (std::size_t i = 0; i < p.size() && difference_.empty(); ++i) {
-      const Disk<T>&a = p.disk[i], &b = q.disk[i];
-      if (!same_bits(a.x, b.x) || !same_bits(a.y, b.y) || !same_bits(a.vx, b.vx) || !same_bits(a.vy, b.vy) ||
-          !same_bits(a.r, b.r) || !same_bits(p.mass[i], q.mass[i]) || p.species[i] != q.species[i])
-        difference_ = "the initial state differs at disk " + std::to_string(i) + ":\n  re-run: " + disk_text(p, i) +
-                      "\n  log:    " + disk_text(q, i);
-    }
-  }
-
-  void on_event(const EventOutcome<T>& o, const Particles<T>& p) override {
-    if (stopped() || o.kind == EventKind::Cell) return;
-    if (replay_.events_applied() >= log_.total_events()) {
-      log_ended_ = true;
-      return;
-    }
-    auto logged = replay_.next_event();
-    if (!logged) {
-      unreadable_ = "the log cannot be read at event " + std::to_string(compared_) + ": " + logged.error().message;
-      return;
-    }
-    const ReplayedEvent<T> engine = as_replayed(o, compared_);
-    if (const std::string field = first_difference(engine, logged.value()); !field.empty()) {
-      difference_ = "event " + std::to_string(compared_) + " differs (" + field + "):\n  re-run: " + describe(engine) +
-                    "\n  log:    " + describe(logged.value());
-      return;
-    }
-    ++compared_;
-    check_keyframe_state(p, &o.time);
-  }
-
-  void on_rebuild(const RebuildPoint<T>& point) override {
-    if (stopped()) return;
-    check_keyframe_state(point.particles, nullptr);
-    if (!stopped()) check_resumable(point);
-  }
-
-  bool stopped() const { return log_ended_ || !difference_.empty() || !unreadable_.empty(); }
-  bool log_ended() const { return log_ended_; }
-  const std::string& difference() const { return difference_; }
-  const std::string& unreadable() const { return unreadable_; }
-  std::uint64_t compared() const { return compared_; }
-  std::size_t keyframes_checked() const { return keyframes_checked_; }
-  std::size_t resumable_checked() const { return resumable_checked_; }
-
- private:
-  static std::string disk_text(const Particles<T>& p, std::size_t i) {
-    const Disk<T>& d = p.disk[i];
-    return "x = (" + exact(d.x) + ", " + exact(d.y) + "), v = (" + exact(d.vx) + ", " + exact(d.vy) +
-           "), r = " + exact(d.r) + ", m = " + exact(p.mass[i]) + ", species " + std::to_string(p.species[i]);
-  }
-
-  std::string keyframe_name(std::size_t k) const {
-    return "keyframe " + std::to_string(k) + " (at event " + std::to_string(log_.keyframes()[k].first_event) +
-           ", byte " + std::to_string(log_.keyframes()[k].offset) + ")";
-  }
-
-  // The keyframes at event compared_, if not checked yet: the last of them is the one seeks load; its
-  // disk records must be the engine's (and, unless it was taken at a rebuild, its time the event's).
-  void check_keyframe_state(const Particles<T>& p, const T* event_time) {
-    const auto& kfs = log_.keyframes();
-    if (next_state_ >= kfs.size() || kfs[next_state_].first_event != compared_) return;
-    std::size_t k = next_state_;
-    while (k + 1 < kfs.size() && kfs[k + 1].first_event == compared_) ++k;
-    next_state_ = k + 1;
-    if (Status s = probe_.seek_event(compared_); !s) {
-      unreadable_ = s.error().message;
-      return;
-    }
-    const Particles<T>& q = probe_.particles();
-    for (std::size_t i = 0; i < p.size(); ++i)
-      if (const std::string field = record_difference(p.disk[i], q.disk[i]); !field.empty()) {
-        difference_ = keyframe_name(k) + " differs from the re-run's state at disk " + std::to_string(i) + " (" +
-                      field + "):\n  re-run: " + record_text(p.disk[i]) + "\n  log:    " + record_text(q.disk[i]);
-        return;
-      }
-    if (event_time && !kfs[k].resumable && !same_bits(*event_time, probe_.time())) {
-      difference_ =
-          keyframe_name(k) + " has time " + exact(probe_.time()) + ", the event before it " + exact(*event_time);
-      return;
-    }
-    ++keyframes_checked_;
-  }
-
-  // The engine rebuilt its predictions: the writer wrote the next resumable keyframe here.
-  void check_resumable(const RebuildPoint<T>& point) {
-    const auto& kfs = log_.keyframes();
-    while (next_resumable_ < kfs.size() && !kfs[next_resumable_].resumable) ++next_resumable_;
-    if (next_resumable_ >= kfs.size()) {
-      if (log_.complete())
-        difference_ = "the re-run rebuilt its predictions at event " + std::to_string(compared_) +
-                      " (t = " + exact(point.time) + "), but the log has no resumable keyframe there";
-      return;
-    }
-    const std::size_t k = next_resumable_++;
-    if (kfs[k].first_event != compared_) {
-      difference_ = "the re-run rebuilt its predictions at event " + std::to_string(compared_) + ", but the next " +
-                    "resumable keyframe is " + keyframe_name(k);
-      return;
-    }
-    auto stored = replay_.resume_point(k);
-    if (!stored) {
-      unreadable_ = stored.error().message;
-      return;
-    }
-    if (const std::string field = resume_difference(stored.value(), point); !field.empty()) {
-      difference_ = keyframe_name(k) + " would not resume the run: its " + field + " differs from the re-run's";
-      return;
-    }
-    ++resumable_checked_;
-  }
-
-  static std::string resume_difference(const ResumePoint<T>& r, const RebuildPoint<T>& point) {
-    const Particles<T>& p = point.particles;
-    if (!same_bits(r.time, point.time)) return "time";
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      if (const std::string field = record_difference(r.disks[i], p.disk[i]); !field.empty())
-        return field + " of disk " + std::to_string(i);
-      if (r.disks[i].last_partner != p.disk[i].last_partner) return "last partner of disk " + std::to_string(i);
-    }
-    if (r.last_collision.size() != p.last_collision.size()) return "TC times";
-    for (std::size_t i = 0; i < p.last_collision.size(); ++i)
-      if (!same_bits(r.last_collision[i], p.last_collision[i])) return "TC time of disk " + std::to_string(i);
-    for (int c = 0; c < kEventKindCount; ++c)
-      if (r.counts.by_kind[c] != point.counts.by_kind[c]) return std::string("count of ") + to_string(EventKind(c));
-    if (r.counts.stale != point.counts.stale || r.counts.tc_elastic != point.counts.tc_elastic) return "counters";
-    if (r.next_sample_index != point.next_sample_index) return "sample count";
-    if (r.next_action_index != point.next_action_index) return "action count";
-    if (r.same_time_events != point.same_time_events) return "stall counter";
-    return "";
-  }
-
-  Replay<T>& replay_;
-  Replay<T>& probe_;
-  const LogReader& log_;
-  std::uint64_t compared_ = 0;
-  std::size_t next_state_ = 0, next_resumable_ = 0;
-  std::size_t keyframes_checked_ = 0, resumable_checked_ = 0;
-  bool log_ended_ = false;
-  std::string difference_, unreadable_;
-};
-
-struct Rerun {
-  Scene scene;
-  InitialState initial;
-  EngineOptions options;
-};
-
-// The run the header describes, set up again; refused if it cannot be the logged run.
-Result<Rerun> prepare(const LogReader& log) {
-  const LogHeaderInfo& h = log.header();
-  auto scene = parse_scene_text(h.scene_text, h.scene_name);
-  if (!scene) return Error{log.path() + ": the scene in the log's header does not load: " + scene.error().message};
-  auto initial = build_initial_state(scene.value());
-  if (!initial)
-    return Error{log.path() + ": the scene in the log's header cannot be set up: " + initial.error().message};
-  Rerun r{scene.value(), std::move(initial).value(), {}};
-  if (r.initial.size() != h.disks)
-    return Error{log.path() + ": setting the scene up again gives " + std::to_string(r.initial.size()) +
-                 " disks, the log has " + std::to_string(h.disks)};
-  if (r.scene.scalar != h.scalar)
-    return Error{log.path() + ": the header's scene asks for " + to_string(r.scene.scalar) + ", the log is " +
-                 to_string(h.scalar)};
-  r.options = engine_options_from(r.scene, r.initial.size());
-  if (r.options.rebuild_interval != h.rebuild_interval)
-    return Error{log.path() + ": the scene's rebuild interval (" + std::to_string(r.options.rebuild_interval) +
-                 ") differs from the log's (" + std::to_string(h.rebuild_interval) + ")"};
-  return r;
-}
-
-// After a run that ended on its own: the totals, the final time and the status must match too.
-template <class T>
-std::string compare_end(const Comparer<T>& cmp, const EngineApi<T>& engine, RunStatus status, const Replay<T>& replay,
-                        const LogReader& log) {
-  if (cmp.compared() != log.total_events())
-    return "the re-run ended (" + std::string(to_string(status)) + ") after " + std::to_string(cmp.compared()) +
-           " events; the log has " + std::to_string(log.total_events());
-  if (!log.complete()) return "";
-  if (!same_bits(engine.time(), replay.final_time()))
-    return "the final time differs: re-run " + exact(engine.time()) + ", log " + exact(replay.final_time());
-  if (log.final_status() != to_string(status))
-    return "the run ended differently: re-run '" + std::string(to_string(status)) + "', log '" + log.final_status() +
-           "'";
-  return "";
-}
-
-template <class T>
-int verify(const VerifyOptions& opt, const std::shared_ptr<LogReader>& log, const Rerun& rerun) {
-  auto made_replay = Replay<T>::create(log);
-  if (!made_replay) return fail(made_replay.error().message);
-  Replay<T>& replay = *made_replay.value();
-  auto made_probe = Replay<T>::create(log);
-  if (!made_probe) return fail(made_probe.error().message);
-  auto made_engine = make_engine<T>(rerun.initial, rerun.options);
-  if (!made_engine) return fail(log->path() + ": " + made_engine.error().message);
-  EngineApi<T>& engine = *made_engine.value();
-  Comparer<T> cmp(replay, *made_probe.value(), *log);
-  engine.add_sink(&cmp);
-
-  tools::ProgressReporter progress(!opt.quiet, "ede-replay verify");
-  const double total = double(std::max<std::uint64_t>(log->total_events(), 1));
-  RunStatus status;
-  // Slices of 2^16 events: a difference stops the run within a few milliseconds of being found.
-  while ((status = engine.run(1u << 16)) == RunStatus::Running && !cmp.stopped())
-    progress.update(double(cmp.compared()) / total, cmp.compared(), double(engine.time()));
-  progress.finish();
-
-  const std::string events = std::to_string(cmp.compared()) + " events";
-  const std::string keyframes = ", " + std::to_string(cmp.keyframes_checked()) + " keyframes (" +
-                                std::to_string(cmp.resumable_checked()) + " resumable) match the re-run's state";
-  if (!cmp.unreadable().empty()) return fail(cmp.unreadable() + " (the " + events + " before it are identical)");
-  if (!cmp.difference().empty()) {
-    std::printf("DIFFERENT: %s\n(the %s before it are identical)\n", cmp.difference().c_str(), events.c_str());
-    return 1;
-  }
-  if (log->damaged())
-    return fail(log->path() + " is damaged: " + log->incomplete_reason() + " (the " + events +
-                " before the damage are identical)");
-  if (!log->complete() && (cmp.log_ended() || cmp.compared() == log->total_events())) {
-    std::printf("verified: %s identical%s; the log is incomplete (%s), so the rest of the run was not compared\n",
-                events.c_str(), keyframes.c_str(), log->incomplete_reason().c_str());
-    return 0;
-  }
-  if (cmp.log_ended()) {
-    std::printf("DIFFERENT: the log ends after %s (%s), the re-run goes on\n(the %s are identical)\n", events.c_str(),
-                log->final_status().c_str(), events.c_str());
-    return 1;
-  }
-  if (const std::string d = compare_end(cmp, engine, status, replay, *log); !d.empty()) {
-    std::printf("DIFFERENT: %s\n(the first %s are identical)\n", d.c_str(), events.c_str());
-    return 1;
-  }
-  std::printf("verified: %s identical%s (final time %s, %s)\n", events.c_str(), keyframes.c_str(),
-              exact(engine.time()).c_str(), log->final_status().c_str());
-  return 0;
-}
-
-int run_verify(const VerifyOptions& opt) {
+int run_verify(const VerifyCliOptions& opt) {
   auto log = open_log(opt.log);
   if (!log) return fail(log.error().message);
-  auto rerun = prepare(*log.value());
-  if (!rerun) return fail(rerun.error().message);
-  return tools::with_scalar(log.value()->header().scalar,
-                            [&]<class T>() { return verify<T>(opt, log.value(), rerun.value()); });
+  tools::ProgressReporter progress(!opt.quiet, "ede-replay verify");
+  VerifyOptions options;
+  options.progress = [&](double fraction, std::uint64_t events) { progress.update(fraction, events, 0); };
+  auto report = log.value().verify(options);
+  progress.finish();
+  if (!report) return fail(report.error().message);
+  std::printf("%s", report.value().text.c_str());
+  return report.value().identical ? 0 : 1;
 }
 
 }  // namespace
 
 Command add_verify_command(CLI::App& app) {
-  auto opt = std::make_shared<VerifyOptions>();
+  auto opt = std::make_shared<VerifyCliOptions>();
   CLI::App* cmd = app.add_subcommand("verify",
                                      "re-run the log's scene and compare every event with the log, bit for "
                                      "bit; exit 0 if identical, 1 at the first difference");

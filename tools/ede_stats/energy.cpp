@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "analysis/log_series.hpp"
-#include "scene/scene_loader.hpp"
+#include "ede/scene.hpp"
 #include "stats_cli.hpp"
 #include "stats_tool.hpp"
 

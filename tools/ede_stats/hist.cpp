@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/distributions.hpp"
+#include "ede/analysis.hpp"
 #include "analysis/log_series.hpp"
 #include "stats_cli.hpp"
 #include "stats_tool.hpp"

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/gas_observables.hpp"
+#include "ede/analysis.hpp"
 #include "open_log.hpp"
 #include "report_error.hpp"
 #include "log/log_reader.hpp"

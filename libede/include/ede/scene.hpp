@@ -4,6 +4,12 @@
 // numbers are doubles here whatever scalar type the engine later runs in: setup draws the initial state in
 // double, so float, double and long double runs of one scene start from the same disks (up to rounding).
 // Rejected: letting the TOML tree flow into setup and the engine; every consumer would re-check types.
+//
+// Loading (load_scene_file, parse_scene_text): TOML text -> --set overrides -> checked Scene. Every error
+// names the file, the line and column where the TOML parser knows them, the key as a dotted path
+// (species[1].radius), what is wrong and what would fix it. Unknown keys are errors (no silent default
+// for a mistyped key). Overrides are applied to the TOML tree before checking, so an override is checked
+// exactly like the file's own value, and Scene::source_text records what was run.
 #pragma once
 
 #include <array>
@@ -11,6 +17,8 @@
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "ede/error.hpp"
 
 namespace ede {
 
@@ -134,5 +142,16 @@ struct Scene {
 
 const char* to_string(BoundaryKind);
 const char* to_string(ScalarKind);
+
+// key=value, e.g. "physics.restitution=0.9", "species[1].mass=25", "species.projectile.velocity.vector=[0,-5]".
+// The value is a TOML value; a bare word that is not a TOML value is taken as a string (scalar=float).
+struct Override {
+  std::string text;
+};
+
+// A scene from a file (its name appears in messages) or from text, with overrides applied and checked.
+Result<Scene> load_scene_file(const std::string& path, const std::vector<Override>& overrides = {});
+Result<Scene> parse_scene_text(const std::string& text, const std::string& source_name = "<text>",
+                               const std::vector<Override>& overrides = {});
 
 }  // namespace ede

@@ -2,7 +2,7 @@
 // Sums run in long double: the series are short (thousands of values), and the variance of values that
 // differ in their last digits (a gas at equilibrium) must not drown in the rounding of the mean.
 // Rejected: a one-pass (Welford) variance, which buys nothing for series that are already in memory.
-#include "analysis/block_average.hpp"
+#include "ede/analysis.hpp"
 
 #include <cmath>
 

@@ -14,6 +14,7 @@
 #include "engine/engine.hpp"
 #include "replay/replay.hpp"
 #include "core/number_text.hpp"
+#include "core/scalar_dispatch.hpp"
 
 namespace ede {
 
@@ -43,7 +44,7 @@ const char* to_string(CraterTimeSource s) {
 }
 
 template <class T>
-Result<CraterMeasurement> measure_crater(std::shared_ptr<const LogReader> log, const CraterRequest<T>& req) {
+static Result<CraterMeasurement> measure_crater_in(const std::shared_ptr<const LogReader>& log, const CraterRequest& req) {
   CraterMeasurement m;
   auto bed = select_bed(log->header(), req.bed_species);
   if (!bed) return Error{log->path() + ": " + bed.error().message};
@@ -62,13 +63,13 @@ Result<CraterMeasurement> measure_crater(std::shared_ptr<const LogReader> log, c
   auto made = Replay<T>::create(log);
   if (!made) return made.error();
   Replay<T>& replay = *made.value();
-  if (Status s = req.before ? replay.seek_time(*req.before) : replay.seek_event(0); !s) return s.error();
+  if (Status s = req.before ? replay.seek_time(T(*req.before)) : replay.seek_event(0); !s) return s.error();
   m.before_time = double(replay.time());
   const DiskPositions before = positions(replay.particles(), replay.time());
 
   const std::string f = short_number(req.energy_fraction);
   if (req.at) {
-    if (Status s = replay.seek_time(*req.at); !s) return s.error();
+    if (Status s = replay.seek_time(T(*req.at)); !s) return s.error();
     m.source = CraterTimeSource::Requested;
     m.when = "the time asked for";
   } else if (m.energy.reached && !req.at_end) {
@@ -99,9 +100,8 @@ Result<CraterMeasurement> measure_crater(std::shared_ptr<const LogReader> log, c
   return m;
 }
 
-template Result<CraterMeasurement> measure_crater<float>(std::shared_ptr<const LogReader>, const CraterRequest<float>&);
-template Result<CraterMeasurement> measure_crater<double>(std::shared_ptr<const LogReader>, const CraterRequest<double>&);
-template Result<CraterMeasurement> measure_crater<long double>(std::shared_ptr<const LogReader>,
-                                                               const CraterRequest<long double>&);
+Result<CraterMeasurement> measure_crater(std::shared_ptr<const LogReader> log, const CraterRequest& request) {
+  return with_scalar(log->header().scalar, [&]<class T>() { return measure_crater_in<T>(log, request); });
+}
 
 }  // namespace ede

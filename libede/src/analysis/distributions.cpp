@@ -1,7 +1,7 @@
 // Histograms, the 2D Maxwell-Boltzmann law and the KS test; see distributions.hpp.
 // Bin lookup is a binary search on the edges, so a sample on an edge lands in the bin the edges say, with
 // no rounding of (x - lo) / width to disagree with them.
-#include "analysis/distributions.hpp"
+#include "ede/analysis.hpp"
 
 #include <algorithm>
 #include <cmath>

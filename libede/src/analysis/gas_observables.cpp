@@ -1,6 +1,6 @@
 // Gas observables; see gas_observables.hpp. Sums in long double, so a pooled average over millions of
 // disks keeps the digits its standard error does not already blur.
-#include "analysis/gas_observables.hpp"
+#include "ede/analysis.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,3 +1,4 @@
+#include "ede/ede.hpp"
 // build_info.hpp: the compiler from its predefined macros, the flags from CMake (EDE_BUILD_FLAGS).
 #include "core/build_info.hpp"
 
@@ -18,5 +19,11 @@ std::string build_compiler() {
 }
 
 std::string build_flags() { return EDE_BUILD_FLAGS; }
+
+}  // namespace ede
+
+namespace ede {
+
+const char* version() { return EDE_VERSION; }
 
 }  // namespace ede

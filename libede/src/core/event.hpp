@@ -1,4 +1,4 @@
-// Events: the one list of kinds, and the outcome every sink sees.
+// EventOutcome: what the engine tells its sinks about each event (the kinds are in ede/events.hpp).
 //
 // An outcome carries what replay needs and nothing it must recompute: the time, the participants and the
 // post-event velocities. Positions are never stored: after an event a disk's state is (x, v, t) with x
@@ -7,24 +7,9 @@
 
 #include <cstdint>
 
+#include "ede/events.hpp"
+
 namespace ede {
-
-// Order matters: at equal times the queue processes the lower kind first (total order time, kind, ids).
-enum class EventKind : std::uint8_t {
-  Pair = 0,      // two disks collide
-  Wall = 1,      // a disk hits a wall (walls boundary)
-  Cell = 2,      // a disk crosses into another cell: bookkeeping only, no state change, not logged
-  Wrap = 3,      // a disk crosses a periodic edge: its stored position moves by one box length
-  Action = 4,    // a scheduled action (reverse every velocity)
-  Sample = 5,    // an observer's sampling time: no state change
-};
-constexpr int kEventKindCount = 6;
-const char* to_string(EventKind);
-
-// Wall ids (EventOutcome::j for Wall events).
-enum WallId : std::int32_t { kWallLeft = 0, kWallRight = 1, kWallBottom = 2, kWallTop = 3 };
-// Wrap directions (EventOutcome::j for Wrap events): which edge was crossed.
-enum WrapDir : std::int32_t { kWrapRight = 0, kWrapLeft = 1, kWrapTop = 2, kWrapBottom = 3 };
 
 template <class T>
 struct EventOutcome {

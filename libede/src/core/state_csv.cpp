@@ -1,6 +1,8 @@
 // Exact CSV snapshots of a state; see state_csv.hpp.
 #include "core/state_csv.hpp"
 
+#include "ede/state.hpp"
+
 #include <cerrno>
 #include <cstring>
 
@@ -23,7 +25,49 @@ void put(std::FILE* out, __float128 v) {
 }
 #endif
 
+template <class C>
+void write_rows(std::FILE* out, const State& s) {
+  const std::vector<C>* cols[] = {&s.x.values<C>(), &s.y.values<C>(), &s.vx.values<C>(), &s.vy.values<C>(),
+                                  &s.radius.values<C>(), &s.mass.values<C>()};
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const std::int32_t sp = s.species[i];
+    std::fprintf(out, "%zu,", i);
+    if (sp >= 0 && std::size_t(sp) < s.species_names.size())
+      std::fputs(s.species_names[std::size_t(sp)].c_str(), out);
+    else
+      std::fprintf(out, "%d", sp);
+    for (const std::vector<C>* c : cols) {
+      std::fputc(',', out);
+      put(out, (*c)[i]);
+    }
+    std::fputc('\n', out);
+  }
+}
+
+Status close_checked(std::FILE* out, const std::string& path) {
+  const bool failed = std::ferror(out) != 0;
+  if (std::fclose(out) != 0 || failed)
+    return Error{"error while writing '" + path + "': " + std::strerror(errno), ErrorKind::Io};
+  return Ok{};
+}
+
 }  // namespace
+
+void write_state_csv(std::FILE* out, const State& s) {
+  std::fputs("id,species,x,y,vx,vy,radius,mass\n", out);
+  switch (s.x.scalar()) {
+    case ScalarKind::Float: return write_rows<float>(out, s);
+    case ScalarKind::Double: return write_rows<double>(out, s);
+    default: return write_rows<long double>(out, s);
+  }
+}
+
+Status write_state_csv(const std::string& path, const State& s) {
+  std::FILE* out = std::fopen(path.c_str(), "w");
+  if (!out) return Error{"cannot write '" + path + "': " + std::strerror(errno), ErrorKind::Io};
+  write_state_csv(out, s);
+  return close_checked(out, path);
+}
 
 template <class T>
 void write_state_csv(std::FILE* out, const Particles<T>& p, T time, const std::vector<std::string>& species_names) {

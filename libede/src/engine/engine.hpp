@@ -1,4 +1,4 @@
-// The engine's public face: options, counters, and EngineApi<T>, created by make_engine<T>().
+// The engine's interface inside the library: options, and EngineApi<T>, created by make_engine<T>().
 //
 // make_engine looks at the effects a scene uses (walls or periodic; elastic, inelastic, or inelastic with
 // the TC model) once, and returns the one Engine instantiation built for exactly that combination: an
@@ -17,7 +17,7 @@
 #include "core/initial_state.hpp"
 #include "core/particles.hpp"
 #include "ede/error.hpp"
-#include "core/run_status.hpp"
+#include "ede/events.hpp"
 #include "ede/scene.hpp"
 #include "engine/sink.hpp"
 
@@ -59,19 +59,6 @@ EngineOptions engine_options_from(const Scene& scene, std::size_t disks);
 // killed run loses at most a few seconds of work.
 std::uint64_t auto_rebuild_interval(std::size_t disks);
 
-struct EventCounts {
-  std::uint64_t by_kind[kEventKindCount] = {};
-  std::uint64_t stale = 0;       // predictions popped after a participant had changed: discarded
-  std::uint64_t tc_elastic = 0;  // collisions made elastic by the TC model
-
-  std::uint64_t of(EventKind k) const { return by_kind[static_cast<int>(k)]; }
-  std::uint64_t collisions() const { return of(EventKind::Pair) + of(EventKind::Wall); }
-  // Processed events: everything but samples and stale predictions (what stop.events counts).
-  std::uint64_t events() const {
-    return of(EventKind::Pair) + of(EventKind::Wall) + of(EventKind::Cell) + of(EventKind::Wrap) +
-           of(EventKind::Action);
-  }
-};
 
 // Where a resumed run starts: a rebuild point as the log stored it. The disks' positions, velocities and
 // times, their last partners and TC times, and the engine's counters; radius, mass and species come from
@@ -97,6 +84,10 @@ class EngineApi {
   // Processes events until a stop condition holds (returns it) or max_events more events and samples were
   // processed (returns Running). The first call reports the initial state to sinks (on_start).
   virtual RunStatus run(std::uint64_t max_events = std::numeric_limits<std::uint64_t>::max()) = 0;
+  // The same, but pausing at time `until`: every event, sample and action at or before it is processed,
+  // then the clock stands at `until` (returns Running) unless a stop condition held first. Pausing changes
+  // nothing that happens later: a paused run produces the events an unpaused one does.
+  virtual RunStatus run_until(T until, std::uint64_t max_events) = 0;
   virtual T time() const = 0;
   virtual const Particles<T>& particles() const = 0;
   virtual const EventCounts& counts() const = 0;

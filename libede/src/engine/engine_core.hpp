@@ -128,30 +128,37 @@ class Engine final : public EngineApi<T> {
            big_.capacity() * sizeof(BigDisk);
   }
 
-  RunStatus run(std::uint64_t max_events) override {
+  RunStatus run(std::uint64_t max_events) override { return run_until(kNever<T>, max_events); }
+
+  RunStatus run_until(T until, std::uint64_t max_events) override {
     if (status_ != RunStatus::Running) return status_;
     if (!started_) start();
+    // Everything at or before `until` happens; a stop time before it ends the run as usual.
+    const T t_limit = std::min(stop_time_, until);
     for (std::uint64_t done = 0; done < max_events;) {
       const QueueKey<T> next = queue_.top();
       const T t_sample = next_sample_time();
       const T t_action = next_action_time();
       const T t_stop = stop_time_;
-      if (next.time <= t_sample && next.time <= t_action && next.time <= t_stop && next.time != kNever<T>) {
+      if (next.time <= t_sample && next.time <= t_action && next.time <= t_limit && next.time != kNever<T>) {
         if (!process_disk_event(next)) continue;  // stale prediction: not an event
         ++done;
         if (const RunStatus s = check_stops(); s != RunStatus::Running) return finish(s);
         if (opt_.rebuild_interval && counts_.events() % opt_.rebuild_interval == 0) rebuild();
-      } else if (t_action != kNever<T> && t_action <= t_sample && t_action <= t_stop) {
+      } else if (t_action != kNever<T> && t_action <= t_sample && t_action <= t_limit) {
         // Everything that happens at time <= t, actions included, happens before an observer looks at t.
         reverse_velocities(t_action);
         ++done;
         if (const RunStatus s = check_stops(); s != RunStatus::Running) return finish(s);
-      } else if (t_sample != kNever<T> && t_sample <= t_stop && !frozen_after(t_sample, next.time, t_action, t_stop)) {
+      } else if (t_sample != kNever<T> && t_sample <= t_limit && !frozen_after(t_sample, next.time, t_action, t_stop)) {
         sample(t_sample);
         ++done;  // samples count towards max_events, so a caller's run(n) always returns
-      } else if (t_stop != kNever<T>) {
+      } else if (t_stop != kNever<T> && t_stop <= until) {
         now_ = t_stop;
         return finish(RunStatus::ReachedTime);
+      } else if (until != kNever<T>) {
+        now_ = std::max(now_, until);  // paused: nothing happens before `until`
+        return RunStatus::Running;
       } else {
         return finish(RunStatus::NoMoreEvents);
       }

@@ -9,7 +9,7 @@
 
 #include "core/event.hpp"
 #include "core/particles.hpp"
-#include "core/run_status.hpp"
+#include "ede/events.hpp"
 
 namespace ede {
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "ede/error.hpp"
+#include "ede/log.hpp"
 #include "ede/scene.hpp"
 
 namespace ede {
@@ -47,13 +48,7 @@ struct LogRecordRef {
   bool resumable = false;
 };
 
-// What a reader accepts before it allocates: a log claiming more is refused as implausible. The defaults
-// cover every run ede can make (10^8 disks; a record, e.g. a keyframe of 10^7 disks, up to 2 GiB);
-// fuzzing and services reading untrusted logs pass tighter ones.
-struct LogLimits {
-  std::uint32_t max_disks = 100000000;
-  std::uint64_t max_record_bytes = std::uint64_t(1) << 31;  // one decompressed record
-};
+// LogLimits (what a reader accepts before it allocates) is public: ede/log.hpp.
 
 class LogReader {
  public:

@@ -15,6 +15,7 @@
 #include "engine/engine.hpp"
 #include "ede/error.hpp"
 #include "ede/scene.hpp"
+#include "log/log_reader.hpp"
 #include "engine/sink.hpp"
 
 namespace ede {
@@ -58,6 +59,10 @@ struct LogContinuation {
   };
   std::vector<Entry> entries;          // index entries of the records kept
 };
+
+// The continuation of `log` from its keyframe k (resumable): the file is cut after that keyframe's record,
+// and the index entries of the records kept are carried over.
+LogContinuation continuation_from(const LogReader& log, std::size_t keyframe);
 
 template <class T>
 class LogWriter final : public Sink<T> {

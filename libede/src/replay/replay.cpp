@@ -238,26 +238,47 @@ Status Replay<T>::advance(std::uint64_t target_event, const T* until_time,
     }
     const DecodedEvent<T>& e = *c.pending;
     if (until_time && e.time > *until_time) break;
+    ReplayedEvent<T> out{e.index, e.time, e.kind, e.i, e.j, e.vix, e.viy, e.vjx, e.vjy};
+    if (f) before_event(e, out);
     if (!apply_event(e, state_, lx_, ly_))
       return Error{log_->path() + ": event " + std::to_string(e.index) +
                    " leaves a disk at a non-finite position or time: the log is corrupted"};
     ++applied_;
     last_event_time_ = e.time;
-    const ReplayedEvent<T> out{e.index, e.time, e.kind, e.i, e.j, e.vix, e.viy, e.vjx, e.vjy};
+    if (f) after_event(e, out);
     c.pending.reset();
     if (f && !f(out)) break;
   }
   return Ok{};
 }
 
+// The velocities just before an event, and the positions at it (after applying), for callers that look
+// at each event: a seek passes no callback and skips this.
+template <class T>
+void Replay<T>::before_event(const DecodedEvent<T>& e, ReplayedEvent<T>& out) const {
+  if (e.i < 0) return;
+  out.vix0 = state_.vx_at(std::size_t(e.i), e.time), out.viy0 = state_.vy_at(std::size_t(e.i), e.time);
+  if (e.kind == EventKind::Pair)
+    out.vjx0 = state_.vx_at(std::size_t(e.j), e.time), out.vjy0 = state_.vy_at(std::size_t(e.j), e.time);
+  if (e.kind == EventKind::Wrap) out.vix = out.vix0, out.viy = out.viy0;
+}
+
+template <class T>
+void Replay<T>::after_event(const DecodedEvent<T>& e, ReplayedEvent<T>& out) const {
+  if (e.i < 0) return;
+  out.xi = state_.x_at(std::size_t(e.i), e.time), out.yi = state_.y_at(std::size_t(e.i), e.time);
+  if (e.kind == EventKind::Pair)
+    out.xj = state_.x_at(std::size_t(e.j), e.time), out.yj = state_.y_at(std::size_t(e.j), e.time);
+}
+
 // Complete logs record the final time; for an incomplete one it is the last event's time, read exactly
 // from the last chunk's times column (the record headers hold it only as a double).
 template <class T>
-T Replay<T>::final_time() const {
-  if (log_->complete()) return scalar_from_bytes<T>(log_->final_time_bytes().data());
-  if (log_->chunks().empty()) return last_event_time_initial_;
-  const LogRecordRef& ref = log_->chunks().back();
-  auto words = log_->load_message(ref.offset, ref.payload_size);
+T log_final_time(const LogReader& log, T time_without_chunks) {
+  if (log.complete()) return scalar_from_bytes<T>(log.final_time_bytes().data());
+  if (log.chunks().empty()) return time_without_chunks;
+  const LogRecordRef& ref = log.chunks().back();
+  auto words = log.load_message(ref.offset, ref.payload_size);
   if (words) {
     try {
       capnp::FlatArrayMessageReader message(as_words(words.value()), reader_options(words.value()));
@@ -267,6 +288,14 @@ T Replay<T>::final_time() const {
     }
   }
   return T(ref.time_last);  // damaged: the approximation; seeking will report the damage
+}
+template float log_final_time<float>(const LogReader&, float);
+template double log_final_time<double>(const LogReader&, double);
+template long double log_final_time<long double>(const LogReader&, long double);
+
+template <class T>
+T Replay<T>::final_time() const {
+  return log_final_time<T>(*log_, last_event_time_initial_);
 }
 
 template <class T>

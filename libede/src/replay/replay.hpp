@@ -12,6 +12,7 @@
 #include <string>
 
 #include "engine/engine.hpp"
+#include "log/chunk_codec.hpp"
 #include "log/log_reader.hpp"
 #include "core/particles.hpp"
 #include "ede/error.hpp"
@@ -25,7 +26,15 @@ struct ReplayedEvent {
   EventKind kind{};
   std::int32_t i = -1, j = -1;    // j: partner, wall id or wrap direction
   T vix{}, viy{}, vjx{}, vjy{};   // post-event velocities (pair: both; wall: i)
+  // Positions at the event (after it: a wrap has moved i by one box length) and velocities just before.
+  T xi{}, yi{}, xj{}, yj{};
+  T vix0{}, viy0{}, vjx0{}, vjy0{};
 };
+
+// The time the run of `log` reached (complete logs), else its last event's time, exactly in T;
+// `time_without_chunks` for an incomplete log with no chunk (its first keyframe's time).
+template <class T>
+T log_final_time(const LogReader& log, T time_without_chunks);
 
 template <class T>
 class Replay {
@@ -59,6 +68,8 @@ class Replay {
                  const std::function<bool(const ReplayedEvent<T>&)>& f);
 
   struct Cursor;  // the chunk being decoded and the next decoded event (replay.cpp)
+  void before_event(const DecodedEvent<T>& e, ReplayedEvent<T>& out) const;
+  void after_event(const DecodedEvent<T>& e, ReplayedEvent<T>& out) const;
 
   std::shared_ptr<const LogReader> log_;
   std::shared_ptr<Cursor> cursor_;

@@ -1,4 +1,4 @@
-// Building and formatting RunSummary. JSON is written by hand (no JSON library among our dependencies):
+// Building and formatting RunSummary (ede/simulation.hpp, run/run_summary.hpp). JSON is written by hand:
 // keys are fixed identifiers, strings are escaped, non-finite numbers become null.
 #include "run/run_summary.hpp"
 
@@ -49,10 +49,10 @@ const char* scalar_name() {
 }  // namespace
 
 double RunSummary::events_per_second() const {
-  return wall_seconds > 0 ? double(counts.events()) / wall_seconds : 0;
+  return wall_seconds > 0 ? double(counts.events() - events_before) / wall_seconds : 0;
 }
 double RunSummary::collisions_per_second() const {
-  return wall_seconds > 0 ? double(counts.collisions()) / wall_seconds : 0;
+  return wall_seconds > 0 ? double(counts.collisions() - collisions_before) / wall_seconds : 0;
 }
 
 std::uint64_t peak_rss_bytes() {
@@ -101,7 +101,10 @@ std::string to_text(const RunSummary& s) {
     << ", TC-elastic " << c.tc_elastic << "\n"
     << "collisions/disk  " << short_number(s.collisions_per_particle) << "\n"
     << "simulated time   " << short_number(s.sim_time) << "\n"
-    << "wall time        " << short_number(s.wall_seconds) << " s (setup " << short_number(s.setup_seconds) << " s)\n"
+    << "wall time        " << short_number(s.wall_seconds) << " s (setup " << short_number(s.setup_seconds) << " s)"
+    << (s.events_before ? " in this process, which resumed the run after event " + std::to_string(s.events_before)
+                        : std::string())
+    << "\n"
     << "speed            " << short_number(s.events_per_second() / 1e6) << " M events/s, "
     << short_number(s.collisions_per_second() / 1e6) << " M collisions/s\n"
     << "kinetic energy   " << short_number(s.energy_initial) << " -> " << short_number(s.energy_final) << " (ratio "
@@ -127,7 +130,7 @@ std::string to_json(const RunSummary& s) {
     << ", \"tc_elastic\": " << c.tc_elastic << ", \"collisions\": " << c.collisions()
     << ", \"collisions_per_particle\": " << number(s.collisions_per_particle)
     << ", \"sim_time\": " << number(s.sim_time) << ", \"wall_seconds\": " << number(s.wall_seconds)
-    << ", \"setup_seconds\": " << number(s.setup_seconds)
+    << ", \"setup_seconds\": " << number(s.setup_seconds) << ", \"events_before\": " << s.events_before
     << ", \"events_per_second\": " << number(s.events_per_second())
     << ", \"collisions_per_second\": " << number(s.collisions_per_second())
     << ", \"energy_initial\": " << number(s.energy_initial) << ", \"energy_final\": " << number(s.energy_final)

@@ -6,7 +6,7 @@
 // kind) sit where both keys are known. What needs the drawn disks (overlaps, disks fitting a region) is
 // setup's job. Rejected: a generic schema driving the checks, which needed escape hatches for every one
 // of those cross-key rules and ended up longer than the code it replaced.
-#include "scene/scene_loader.hpp"
+#include "ede/scene.hpp"
 
 #include <algorithm>
 #include <filesystem>

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene_loader.hpp"
+#include "ede/scene.hpp"
 #include "scene/scene_keys.hpp"
 
 namespace ede::scene_detail {

@@ -14,7 +14,7 @@
 
 #include "ede/scene.hpp"
 
-namespace ede::tools {
+namespace ede {
 
 // The scalar types of logs, replay and everything downstream of them.
 template <class T>
@@ -44,4 +44,4 @@ decltype(auto) with_engine_scalar(ScalarKind kind, F&& f) {
   return with_scalar(kind, std::forward<F>(f));
 }
 
-}  // namespace ede::tools
+}  // namespace ede

@@ -1,0 +1,76 @@
+// Events: the kinds of event, the counts a run keeps, why a run stops, and one event as a log holds it.
+//
+// A run is a sequence of events; the log stores those that change the state (pair and wall collisions,
+// periodic wraps, scheduled actions) with the velocities after them. Cell crossings (bookkeeping of the
+// neighbour grid) and samples (an observer's times) are counted but never stored.
+#pragma once
+
+#include <cstdint>
+
+namespace ede {
+
+// A time, wide enough to carry a time of any log's scalar type (float, double, long double) exactly:
+// a double converts to it without rounding, and a time the library returns converts back to the log's
+// type exactly. Pass plain doubles; read results as doubles unless you study long double runs.
+using Time = long double;
+
+// Order matters: at equal times the queue processes the lower kind first (total order time, kind, ids).
+enum class EventKind : std::uint8_t {
+  Pair = 0,    // two disks collide
+  Wall = 1,    // a disk hits a wall (walls boundary)
+  Cell = 2,    // a disk crosses into another cell: bookkeeping only, no state change, not logged
+  Wrap = 3,    // a disk crosses a periodic edge: its stored position moves by one box length
+  Action = 4,  // a scheduled action (reverse every velocity)
+  Sample = 5,  // an observer's sampling time: no state change, not logged
+};
+constexpr int kEventKindCount = 6;
+const char* to_string(EventKind);  // "pair", "wall", ...
+
+// Event::j of a wall event: which wall. Of a wrap event: which edge the disk crossed.
+enum WallId : std::int32_t { kWallLeft = 0, kWallRight = 1, kWallBottom = 2, kWallTop = 3 };
+enum WrapDir : std::int32_t { kWrapRight = 0, kWrapLeft = 1, kWrapTop = 2, kWrapBottom = 3 };
+
+struct EventCounts {
+  std::uint64_t by_kind[kEventKindCount] = {};
+  std::uint64_t stale = 0;       // predictions popped after a participant had changed: discarded
+  std::uint64_t tc_elastic = 0;  // collisions made elastic by the TC model
+
+  std::uint64_t of(EventKind k) const { return by_kind[static_cast<int>(k)]; }
+  std::uint64_t collisions() const { return of(EventKind::Pair) + of(EventKind::Wall); }
+  // Processed events: everything but samples and stale predictions (what stop.events counts).
+  std::uint64_t events() const {
+    return of(EventKind::Pair) + of(EventKind::Wall) + of(EventKind::Cell) + of(EventKind::Wrap) +
+           of(EventKind::Action);
+  }
+};
+
+// Why a run stopped (or that it has not).
+enum class RunStatus {
+  Running,            // not finished: an event budget was used, a time reached by advance_to, or interrupted
+  ReachedTime,        // stop.time reached (the state is reported at exactly that time)
+  ReachedEvents,      // stop.events processed
+  ReachedCollisions,  // stop.collisions_per_particle reached
+  ReachedEnergy,      // kinetic energy fell to stop.energy_fraction of the initial
+  NoMoreEvents,       // nothing will ever happen again (every disk at rest, or moving freely forever)
+  Stalled,            // time stopped advancing: inelastic collapse; the run's message says what to do
+  CameToRest,         // an inelastic run cooled below the speeds the scalar type resolves; see the message
+};
+const char* to_string(RunStatus);
+bool is_finished(RunStatus);  // anything but Running
+
+// One logged event with everything known about it, in the log's own values (exact, widened to Time).
+// Fields a kind does not have are 0.
+struct Event {
+  std::uint64_t index = 0;  // events before it in the log
+  Time time = 0;
+  EventKind kind = EventKind::Pair;
+  std::int32_t i = -1;  // the disk (pair: the lower id); -1 for an action
+  std::int32_t j = -1;  // pair: the other disk; wall: WallId; wrap: WrapDir; action: -1
+  // Positions of i and j at the event (a wrap: i's position after it moved by one box length).
+  Time xi = 0, yi = 0, xj = 0, yj = 0;
+  // Velocities just before and just after the event (pair: both disks; wall: i; wrap: i's, unchanged).
+  Time vix_before = 0, viy_before = 0, vjx_before = 0, vjy_before = 0;
+  Time vix = 0, viy = 0, vjx = 0, vjy = 0;
+};
+
+}  // namespace ede

@@ -1,0 +1,136 @@
+// Simulation: a scene run by the event-driven engine, with its event log, from a program.
+//
+//   ede::Scene scene = ede::load_scene_file("gas.toml").value();
+//   ede::Simulation sim = ede::Simulation::create(scene, {.log_path = "gas.ede"}).value();
+//   sim.run();                      // to the scene's stop condition
+//   std::printf("%s", ede::to_text(sim.summary()).c_str());
+//
+// create() sets the scene up (placement, velocities; deterministic from the scene's seed), picks the
+// engine built for exactly the effects the scene uses and the scalar type it asks for, and, with a
+// log_path, records every event there (schema/FORMAT.md). run() goes to the scene's stop condition;
+// advance_to(t) stops at a time and state() shows the disks there, for interactive use; both can be
+// called again to go on. A run, its pauses and its log are the same events bit for bit whatever the
+// slices: pausing never changes what happens. resume() continues a killed run from its log, in place,
+// and the log it finishes is byte-identical to an uninterrupted run's.
+// One thread at a time per Simulation; interrupt() alone may be called from another thread or a signal
+// handler.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <string>
+
+#include "ede/error.hpp"
+#include "ede/events.hpp"
+#include "ede/scene.hpp"
+#include "ede/state.hpp"
+
+namespace ede {
+
+// What a finished (or interrupted) run reports: counts, times, energies, memory, effects.
+struct RunSummary {
+  std::string scene;          // the scene's name (its file)
+  std::string scalar;         // "double", ...
+  std::string effects;        // the engine instantiation's effects, e.g. "walls, elastic, grid 20x20"
+  std::string status;         // why the run ended (to_string(RunStatus)), or "interrupted"
+  std::string stall_message;  // why it stalled or came to rest, and what to do; else empty
+  std::uint64_t seed = 0;
+  std::uint64_t disks = 0;
+  EventCounts counts;
+  double collisions_per_particle = 0;  // 2 * pair collisions / N
+  double sim_time = 0;
+  double wall_seconds = 0;             // time spent in the event loop by this process (setup excluded)
+  double setup_seconds = 0;            // placement, first predictions (resume: reading the log back)
+  std::uint64_t events_before = 0;     // a resumed run: events processed before this process took it up
+  std::uint64_t collisions_before = 0; // ... and collisions among them
+  double energy_initial = 0, energy_final = 0;
+  double momentum_initial[2] = {0, 0}, momentum_final[2] = {0, 0};
+  std::uint64_t engine_bytes = 0;      // the engine's own arrays
+  std::uint64_t peak_rss_bytes = 0;    // the whole process, from getrusage
+
+  // Rates of this process: events processed in wall_seconds (a resumed run's earlier events excluded).
+  double events_per_second() const;      // every processed event (pair, wall, cell, wrap, action)
+  double collisions_per_second() const;  // pair + wall 
+};
+std::string to_text(const RunSummary& s);  // aligned lines for people
+std::string to_json(const RunSummary& s);  // one JSON object (stable keys) for scripts
+
+// How far a run is, for progress displays.
+struct Progress {
+  double fraction = 0;       // towards the nearest stop condition, in [0, 1]
+  std::uint64_t events = 0;  // processed so far
+  double time = 0;           // simulated time
+  double wall_seconds = 0;   // in the event loop so far
+};
+
+struct SimulationOptions {
+  std::string log_path;  // record every event here ("" = no log); an existing file is replaced
+  // Called every 2^18 events or so (a few times a second) from run() and advance_to().
+  std::function<void(const Progress&)> progress;
+};
+
+// What the log of an interrupted or finished run holds, read back from the file.
+struct LogKept {
+  std::string path;
+  std::uint64_t events = 0;                 // readable events
+  double last_event_time = 0;
+  bool complete = false;                    // closed by its index: the run finished
+  bool resumable = false;                   // ede-sim --resume can continue it
+  std::uint64_t resume_event = 0;           // the resume would restart from this event
+  double resume_time = 0;                   // ... at this time
+  std::uint64_t bytes = 0;
+};
+
+class Simulation {
+ public:
+  // A new run of `scene`. Fails with the scene's problem (overlaps, a packing that cannot be placed, ...)
+  // or the log's (cannot write the file).
+  static Result<Simulation> create(const Scene& scene, const SimulationOptions& options = {});
+  // Continues the run logged in `log_path` (killed before it finished) from its last resumable keyframe,
+  // writing the rest of the log in place. options.log_path is ignored.
+  static Result<Simulation> resume(const std::string& log_path, const SimulationOptions& options = {});
+
+  Simulation(Simulation&&) noexcept;
+  Simulation& operator=(Simulation&&) noexcept;
+  ~Simulation();  // closes the log (see close())
+
+  // Runs until a stop condition of the scene holds (returns it), `max_events` more events were processed,
+  // or interrupt() was called (both return Running). After close(), runs nothing and returns status().
+  RunStatus run(std::uint64_t max_events = std::numeric_limits<std::uint64_t>::max());
+  // Processes every event up to time t (not beyond) and leaves the state at t: returns Running, or the
+  // stop condition met before t. Fails for a t before the current time.
+  Result<RunStatus> advance_to(Time t);
+  // Makes run() or advance_to() return at the next check (every few thousand events). Async-signal-safe.
+  void interrupt();
+  bool interrupted() const;
+
+  RunStatus status() const;             // Running until a stop condition held
+  Time time() const;                    // the current time
+  State state() const;                  // every disk at the current time
+  const Scene& scene() const;
+  EventCounts counts() const;
+  RunSummary summary() const;
+  std::string message() const;          // why the run stalled or came to rest (what to do), else ""
+  // The current state as exact CSV, in the run's own precision (float128 runs: 36 digits).
+  Status write_state_csv(const std::string& path) const;
+
+  // Closes the log: a finished run's log gets its index; an unfinished one keeps every complete record
+  // (ede-sim --resume continues it). Returns the first I/O error of the whole run, if any. Idempotent.
+  Status close();
+  // The log as it stands on disk after close(): what it holds and whether it can be resumed. Fails without
+  // a log.
+  Result<LogKept> log_kept() const;
+
+  struct Impl;
+
+ private:
+  explicit Simulation(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+// Peak resident memory of this process so far (getrusage).
+std::uint64_t peak_rss_bytes();
+
+}  // namespace ede

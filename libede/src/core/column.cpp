@@ -1,0 +1,80 @@
+// Column, exact_text and parse_exact (ede/state.hpp).
+//
+// Exact text uses the digits that round-trip each type (float 9, double 17, long double 21 significant
+// digits) through printf's %g, the format every CSV of ede has used, so old and new outputs compare equal.
+// Rejected: std::to_chars shortest form for doubles (shorter, but a CSV written before would no longer
+// compare byte for byte with one written now, and long double has no to_chars in libstdc++ 12).
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+#include "ede/state.hpp"
+
+namespace ede {
+
+ScalarKind Column::scalar() const {
+  switch (data_.index()) {
+    case 1: return ScalarKind::Float;
+    case 2: return ScalarKind::LongDouble;
+    default: return ScalarKind::Double;
+  }
+}
+
+std::size_t Column::size() const {
+  return std::visit([](const auto& v) { return v.size(); }, data_);
+}
+
+double Column::operator[](std::size_t i) const {
+  return std::visit([i](const auto& v) { return double(v[i]); }, data_);
+}
+
+long double Column::exact(std::size_t i) const {
+  return std::visit([i](const auto& v) { return static_cast<long double>(v[i]); }, data_);
+}
+
+std::vector<double> Column::to_doubles() const {
+  return std::visit([](const auto& v) { return std::vector<double>(v.begin(), v.end()); }, data_);
+}
+
+const void* Column::data() const {
+  return std::visit([](const auto& v) -> const void* { return v.data(); }, data_);
+}
+
+template <class T>
+const std::vector<T>& Column::values() const {
+  if (const auto* v = std::get_if<std::vector<T>>(&data_)) return *v;
+  throw Exception(Error{std::string("this column holds ") + to_string(scalar()) + " values, not the type asked for",
+                        ErrorKind::Invalid});
+}
+template const std::vector<float>& Column::values<float>() const;
+template const std::vector<double>& Column::values<double>() const;
+template const std::vector<long double>& Column::values<long double>() const;
+
+std::string exact_text(long double value, ScalarKind scalar) {
+  char b[64];
+  switch (scalar) {
+    case ScalarKind::Float: std::snprintf(b, sizeof b, "%.9g", double(float(value))); break;
+    case ScalarKind::LongDouble:
+    case ScalarKind::Float128: std::snprintf(b, sizeof b, "%.21Lg", value); break;
+    case ScalarKind::Double: std::snprintf(b, sizeof b, "%.17g", double(value)); break;
+  }
+  return b;
+}
+
+Result<Time> parse_exact(const std::string& text, ScalarKind scalar) {
+  const char* s = text.c_str();
+  char* end = nullptr;
+  errno = 0;
+  Time v = 0;
+  switch (scalar) {
+    case ScalarKind::Float: v = std::strtof(s, &end); break;
+    case ScalarKind::Double: v = std::strtod(s, &end); break;
+    default: v = std::strtold(s, &end); break;
+  }
+  if (text.empty() || end != s + text.size() || !std::isfinite(v) || errno == ERANGE)
+    return Error{"'" + text + "' is not a finite number"};
+  return v;
+}
+
+}  // namespace ede

@@ -1,0 +1,51 @@
+// setup_new_run, setup_resumed_run and prepare_resumption; see run_setup.hpp.
+#include "run/run_setup.hpp"
+
+#include "replay/replay.hpp"
+#include "setup/setup.hpp"
+
+namespace ede {
+
+Result<RunSetup> setup_new_run(const Scene& scene) {
+  auto initial = build_initial_state(scene);
+  if (!initial) return initial.error();
+  RunSetup r{scene, std::move(initial).value(), {}, nullptr};
+  r.options = engine_options_from(r.scene, r.initial.size());
+  return r;
+}
+
+Result<RunSetup> setup_resumed_run(const std::string& path) {
+  auto log = LogReader::open(path);
+  if (!log) return log.error();
+  const LogHeaderInfo& h = log.value()->header();
+  if (log.value()->complete())
+    return Error{path + ": the run already finished (" + log.value()->final_status() + "); nothing to resume"};
+  auto scene = parse_scene_text(h.scene_text, h.scene_name);
+  if (!scene) return Error{path + ": the scene in the log's header no longer loads: " + scene.error().message};
+  auto r = setup_new_run(scene.value());
+  if (!r) return r.error();
+  if (r.value().initial.size() != h.disks)
+    return Error{path + ": setting the scene up again gives " + std::to_string(r.value().initial.size()) +
+                 " disks, the log has " + std::to_string(h.disks) + " (a different ede version?)"};
+  if (r.value().options.rebuild_interval != h.rebuild_interval)
+    return Error{path + ": the rebuild interval differs from the log's (a different ede version?)"};
+  r.value().resumed_log = log.value();
+  return r;
+}
+
+template <class T>
+Result<Resumption<T>> prepare_resumption(const std::shared_ptr<LogReader>& log) {
+  auto k = log->last_resumable_keyframe();
+  if (!k) return k.error();
+  auto replay = Replay<T>::create(log);
+  if (!replay) return replay.error();
+  auto point = replay.value()->resume_point(k.value());
+  if (!point) return point.error();
+  return Resumption<T>{std::move(point).value(), continuation_from(*log, k.value())};
+}
+
+template Result<Resumption<float>> prepare_resumption<float>(const std::shared_ptr<LogReader>&);
+template Result<Resumption<double>> prepare_resumption<double>(const std::shared_ptr<LogReader>&);
+template Result<Resumption<long double>> prepare_resumption<long double>(const std::shared_ptr<LogReader>&);
+
+}  // namespace ede

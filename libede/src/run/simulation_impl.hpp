@@ -1,0 +1,55 @@
+// Simulation::Impl: the type-erased face of a run, and SimulationOf<T>, the run in scalar type T.
+//
+// The public Simulation holds an Impl; create() and resume() pick SimulationOf<T> once, for the scalar the
+// scene asks for, so everything below runs in T with no further dispatch. The engine is driven in slices
+// (run_slice events at a time): between slices interrupt() is noticed and progress is reported. Slicing
+// never changes what happens (EngineApi::run continues exactly where it stopped).
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <string>
+#include <type_traits>
+
+#include "core/scalar_dispatch.hpp"
+#include "ede/simulation.hpp"
+#include "engine/engine.hpp"
+#include "log/log_writer.hpp"
+#include "run/run_setup.hpp"
+
+namespace ede {
+
+struct Simulation::Impl {
+  virtual ~Impl() = default;
+  virtual RunStatus drive(std::uint64_t max_events, std::optional<Time> until) = 0;
+  virtual Time time() const = 0;
+  virtual State state() const = 0;
+  virtual EventCounts counts() const = 0;
+  virtual RunSummary summary() const = 0;
+  virtual std::string message() const = 0;
+  virtual Status write_state_csv(const std::string& path) const = 0;
+  virtual Status close_log() = 0;
+
+  Scene scene;
+  SimulationOptions options;
+  std::string log_path;  // "" without a log
+  std::atomic<bool> interrupt_requested{false};
+  bool was_interrupted = false;
+  RunStatus status = RunStatus::Running;
+  double setup_seconds = 0, wall_seconds = 0;
+  std::uint64_t events_before = 0;  // resumed: events processed before this process took the run up
+  std::uint64_t collisions_before = 0;
+  bool closed = false;
+  std::optional<Status> close_result;
+};
+
+// The log sink of a run in T: none for __float128, which the log format does not hold.
+template <class T>
+using LogWriterFor = std::conditional_t<kLogScalar<T>, std::unique_ptr<LogWriter<T>>, std::nullptr_t>;
+
+// Makes the Impl for a prepared run (setup, and for a resume the log to continue).
+Result<std::unique_ptr<Simulation::Impl>> make_simulation_impl(RunSetup setup, const SimulationOptions& options);
+
+}  // namespace ede

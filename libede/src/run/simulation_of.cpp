@@ -1,0 +1,165 @@
+// SimulationOf<T>: a run in scalar type T behind Simulation::Impl (simulation_impl.hpp).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "core/state_csv.hpp"
+#include "core/state_of.hpp"
+#include "run/progress_fraction.hpp"
+#include "run/run_summary.hpp"
+#include "run/simulation_impl.hpp"
+
+namespace ede {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Events per slice: interrupt() is noticed within a slice (~50 ms at 1 M events/s), and progress is
+// reported every kSlicesPerProgress slices.
+constexpr std::uint64_t kSlice = 1u << 16;
+constexpr int kSlicesPerProgress = 4;
+
+template <class T>
+class SimulationOf final : public Simulation::Impl {
+ public:
+  SimulationOf(RunSetup setup, std::unique_ptr<EngineApi<T>> engine, LogWriterFor<T> log)
+      : setup_(std::move(setup)), engine_(std::move(engine)), log_(std::move(log)) {
+    if constexpr (kLogScalar<T>)
+      if (log_) engine_->add_sink(log_.get());  // first, as DESIGN.md orders the sinks
+    for (std::size_t i = 0; i < setup_.initial.size(); ++i) {
+      px0_ += setup_.initial.mass[i] * setup_.initial.vx[i];
+      py0_ += setup_.initial.mass[i] * setup_.initial.vy[i];
+    }
+  }
+
+  RunStatus drive(std::uint64_t max_events, std::optional<Time> until) override {
+    const auto start = std::chrono::steady_clock::now();
+    std::uint64_t left = max_events;
+    int slices = 0;
+    RunStatus s = RunStatus::Running;
+    while (left > 0 && !interrupt_requested.load(std::memory_order_relaxed)) {
+      const std::uint64_t n = std::min(left, kSlice);
+      const std::uint64_t before = engine_->counts().events() + engine_->counts().of(EventKind::Sample);
+      s = until ? engine_->run_until(T(*until), n) : engine_->run(n);
+      if (s != RunStatus::Running) break;
+      const std::uint64_t done = engine_->counts().events() + engine_->counts().of(EventKind::Sample) - before;
+      if (until && done < n) break;  // paused at `until`
+      left -= std::min(left, n);
+      if (options.progress && ++slices % kSlicesPerProgress == 0) report_progress(start);
+    }
+    if (interrupt_requested.exchange(false)) was_interrupted = true;
+    wall_seconds += seconds_since(start);
+    status = s;
+    return s;
+  }
+
+  Time time() const override { return Time(engine_->time()); }
+  EventCounts counts() const override { return engine_->counts(); }
+  std::string message() const override { return engine_->stall_message(); }
+
+  State state() const override {
+    return state_of(engine_->particles(), engine_->time(), engine_->counts().events(), setup_.scene.lx,
+                    setup_.scene.ly, setup_.scene.boundary, setup_.initial.species_names);
+  }
+
+  RunSummary summary() const override {
+    RunSummary s = summarize(*engine_, px0_, py0_);
+    s.scene = setup_.scene.source_name;
+    s.seed = setup_.scene.seed;
+    s.status = was_interrupted && status == RunStatus::Running ? "interrupted" : to_string(status);
+    s.wall_seconds = wall_seconds;
+    s.setup_seconds = setup_seconds;
+    s.events_before = events_before;
+    s.collisions_before = collisions_before;
+    return s;
+  }
+
+  Status write_state_csv(const std::string& path) const override {
+    return write_state_csv_file(path, engine_->particles(), engine_->time(), setup_.initial.species_names);
+  }
+
+  Status close_log() override {
+    if constexpr (kLogScalar<T>) {
+      if (!log_) return Ok{};
+      // A finished run's log was closed by on_finish; destroying the writer of an unfinished one flushes
+      // every complete record. The engine keeps a pointer to the sink, so a closed Simulation never runs
+      // the engine again (Simulation::run checks).
+      const std::string error = log_->error();
+      log_.reset();
+      if (!error.empty()) return Error{"the event log " + log_path + " is incomplete: " + error, ErrorKind::Io};
+    }
+    return Ok{};
+  }
+
+  std::uint64_t logged_events() const {
+    if constexpr (kLogScalar<T>) return log_ ? log_->events_logged() : 0;
+    return 0;
+  }
+
+ private:
+  void report_progress(std::chrono::steady_clock::time_point start) const {
+    const EventCounts& c = engine_->counts();
+    double energy_ratio = 1;
+    if (setup_.scene.stop.energy_fraction && engine_->initial_kinetic_energy() > 0)
+      energy_ratio = kinetic_energy(engine_->particles()) / engine_->initial_kinetic_energy();
+    const ProgressInputs now{double(engine_->time()), c.events(), c.of(EventKind::Pair), energy_ratio};
+    options.progress(Progress{progress_fraction(setup_.scene.stop, setup_.initial.size(), now), c.events(),
+                              double(engine_->time()), wall_seconds + seconds_since(start)});
+  }
+
+  RunSetup setup_;
+  std::unique_ptr<EngineApi<T>> engine_;
+  LogWriterFor<T> log_;
+  double px0_ = 0, py0_ = 0;
+};
+
+template <class T>
+Result<std::unique_ptr<Simulation::Impl>> make_in(RunSetup setup, const SimulationOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  std::optional<Resumption<T>> resumption;
+  if constexpr (kLogScalar<T>) {
+    if (setup.resumed_log) {
+      auto r = prepare_resumption<T>(setup.resumed_log);
+      if (!r) return r.error();
+      resumption = std::move(r).value();
+    }
+  }
+  auto engine = make_engine<T>(setup.initial, setup.options, resumption ? &resumption->point : nullptr);
+  if (!engine) return Error{setup.scene.source_name + ": " + engine.error().message};
+  const std::string log_path = setup.resumed_log ? setup.resumed_log->path() : options.log_path;
+  LogWriterFor<T> log{};
+  if constexpr (kLogScalar<T>) {
+    if (!log_path.empty()) {
+      auto w = LogWriter<T>::create(log_path, LogRunInfo::from(setup.scene, setup.options, setup.initial.species_names),
+                                    LogSettings::from(setup.scene.log), resumption ? &resumption->continuation : nullptr);
+      if (!w) return Error{w.error().message, ErrorKind::Io};
+      log = std::move(w).value();
+    }
+  }
+  const std::uint64_t before = resumption ? resumption->point.counts.events() : 0;
+  const std::uint64_t collisions_before = resumption ? resumption->point.counts.collisions() : 0;
+  const Scene scene = setup.scene;
+  auto impl = std::make_unique<SimulationOf<T>>(std::move(setup), std::move(engine).value(), std::move(log));
+  impl->scene = scene;
+  impl->options = options;
+  impl->log_path = log_path;
+  impl->events_before = before;
+  impl->collisions_before = collisions_before;
+  impl->setup_seconds = seconds_since(start);
+  return std::unique_ptr<Simulation::Impl>(std::move(impl));
+}
+
+}  // namespace
+
+Result<std::unique_ptr<Simulation::Impl>> make_simulation_impl(RunSetup setup, const SimulationOptions& options) {
+  if (setup.scene.scalar == ScalarKind::Float128 && !options.log_path.empty())
+    return Error{setup.scene.source_name + ": float128 runs are for the accuracy study and write no event log (the "
+                     "log format holds float, double and long double): run without a log (no -o)",
+                 ErrorKind::Unsupported};
+  return with_engine_scalar(setup.scene.scalar, [&]<class T>() { return make_in<T>(std::move(setup), options); });
+}
+
+}  // namespace ede
