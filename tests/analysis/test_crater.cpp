@@ -97,7 +97,7 @@ TEST_CASE("crater: a box-shaped hole has its exact depth, width, area and count"
   CHECK(m.raised_area == 0);
 }
 
-TEST_CASE("crater: a V-shaped hole; a drop equal to the threshold is not crater", "[analysis][crater]") {
+TEST_CASE("crater: a V-shaped hole, a drop equal to the threshold is not crater", "[analysis][crater]") {
   const Bed b = stack();
   DiskPositions after = b.state;
   std::vector<int> depth(kColumns, 0);
@@ -222,7 +222,7 @@ TEST_CASE("crater: the bed's body is what links to the floor, both halves of a s
   }
 }
 
-TEST_CASE("crater: bins tile the box; edges and out-of-box centres go to the end bins", "[analysis][crater]") {
+TEST_CASE("crater: bins tile the box, edges and out-of-box centres go to the end bins", "[analysis][crater]") {
   const Bed b = stack();
   CraterSettings s;
   s.bin_width = {0.03, false};  // 1 / 0.03 = 33.3 -> 33 bins of width 1/33

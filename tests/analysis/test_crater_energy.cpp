@@ -73,7 +73,7 @@ TEST_CASE("crater energy: the crossing is the first event whose replayed state i
   CHECK(c.end_fraction == kinetic_energy(replay->particles()) / c.initial_energy);
 }
 
-TEST_CASE("crater energy: a fraction never reached ends at the log's end; fraction 1 at event 0",
+TEST_CASE("crater energy: a fraction never reached ends at the log's end, fraction 1 at event 0",
           "[analysis][crater]") {
   const std::string path = cooling_log<double>("crater-energy-end.ede");
   const auto log = open_log(path);

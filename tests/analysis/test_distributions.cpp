@@ -82,7 +82,7 @@ TEST_CASE("Maxwell-Boltzmann speed and energy densities integrate to 1 and match
   CHECK(mb_energy_cdf(-1, 1) == 0);
 }
 
-TEST_CASE("a mixture's MB law weights each mass by its share; bin densities integrate to 1", "[analysis]") {
+TEST_CASE("a mixture's MB law weights each mass by its share, bin densities integrate to 1", "[analysis]") {
   const MaxwellBoltzmann mb = maxwell_boltzmann_for({1, 4, 1, 1}, 0.8);
   REQUIRE(mb.masses.size() == 2);
   CHECK(mb.masses[0].mass == 1);

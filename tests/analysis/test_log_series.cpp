@@ -177,7 +177,7 @@ TEST_CASE("collision counts equal the log's pair and wall events", "[analysis]")
   CHECK(o.value().mean_free_time() == Approx(300 * o.value().end_time / (2.0 * double(pairs.back()))));
 }
 
-TEST_CASE("snapshots are the replayed velocities; speed classes sum to 100%", "[analysis]") {
+TEST_CASE("snapshots are the replayed velocities, speed classes sum to 100%", "[analysis]") {
   const std::string path = run_scene<double>(gas_scene("periodic", 200, 0.01, "time = 0.5"), "series-snap.ede");
   const auto log = open_log(path);
   const std::vector<double> times = {0, 0.1, 0.1, 0.37, 0.5};
@@ -211,7 +211,7 @@ TEST_CASE("series and snapshots refuse times after the end or out of order", "[a
   CHECK(log_series(log, {}));
 }
 
-TEST_CASE("a gas relaxed from one speed follows Maxwell-Boltzmann; the initial state does not", "[analysis]") {
+TEST_CASE("a gas relaxed from one speed follows Maxwell-Boltzmann, the initial state does not", "[analysis]") {
   // 400 disks, phi = 0.13, periodic, 50 collisions per disk. Energies of 6 snapshots in the second half
   // (~5 mean free times apart, so nearly independent) pooled: 2400 samples. A true MB sample has p
   // uniform on [0, 1]; p > 1e-3 fails for one seed in a thousand and the run is deterministic, so the
@@ -231,7 +231,7 @@ TEST_CASE("a gas relaxed from one speed follows Maxwell-Boltzmann; the initial s
   CHECK(ks_test_mb_energies(e0, kT).p_value < 1e-100);
 }
 
-TEST_CASE("a mixture of masses m0 and 4 m0 shares its energy equally; mean speeds in ratio 2", "[analysis]") {
+TEST_CASE("a mixture of masses m0 and 4 m0 shares its energy equally, mean speeds in ratio 2", "[analysis]") {
   // 300 light (m = 1) and 300 heavy (m = 4) disks, both from speed 1 (mean energies 0.5 and 2), periodic,
   // 60 collisions per disk; 6 snapshots of the second half pooled (1800 samples per species). Tolerances:
   // 4 standard errors, from the samples' own spread, treating the snapshots as independent.

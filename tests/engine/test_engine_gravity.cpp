@@ -91,7 +91,7 @@ TEST_CASE("gravity: two disks falling together collide as in their falling frame
   CHECK(pairs[0].viy == Approx(-0.125).epsilon(1e-13));  // the fall so far, g t
 }
 
-TEST_CASE("gravity: an elastic gas conserves kinetic plus potential energy; its log replays exactly", "[gravity][log]") {
+TEST_CASE("gravity: an elastic gas conserves kinetic plus potential energy, its log replays exactly", "[gravity][log]") {
   const InitialState s = lattice_gas(20, 0.008, 1.0, 41);
   EngineOptions o = under_gravity(3.0, 1e9);
   o.stop.events = 150000;

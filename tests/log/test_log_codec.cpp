@@ -74,7 +74,7 @@ TEST_CASE("the file header refuses other files and other versions", "[log][codec
   CHECK(logfmt::check_file_header(h, version).find("not an ede event log") != std::string::npos);
 }
 
-TEST_CASE("varints and zigzag round-trip; overlong and cut varints are refused", "[log][codec]") {
+TEST_CASE("varints and zigzag round-trip, overlong and cut varints are refused", "[log][codec]") {
   ByteWriter w;
   const u128 values[] = {0, 1, 127, 128, 300, (u128(1) << 64) + 5, ~u128(0)};
   for (const u128 v : values) w.varint(v);

@@ -92,7 +92,7 @@ TEST_CASE("the pinned content digest of a small run has not changed", "[log][det
   CHECK(digest.value() == "749da120884f6114b4bf5d85ae235762bce810a703049dfb41fd1c15596ada73");
 }
 
-TEST_CASE("a run killed with SIGKILL leaves a readable log; --resume completes it exactly", "[log][resume][tool]") {
+TEST_CASE("a run killed with SIGKILL leaves a readable log, --resume completes it exactly", "[log][resume][tool]") {
   const std::string scene = temp_path("kill-scene.toml");
   std::ofstream(scene) << "seed = 3\n[box]\nsize = [1.0, 1.0]\nboundary = \"periodic\"\n"
                           "[engine]\nrebuild_interval = 100000\n[log]\nkeyframe_interval = 30000\n"

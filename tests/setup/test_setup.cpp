@@ -104,7 +104,7 @@ bool contains(const std::string& text, const std::string& part) { return text.fi
 
 }  // namespace
 
-TEST_CASE("setup is deterministic: same seed, same bits; another seed, other disks", "[setup]") {
+TEST_CASE("setup is deterministic: same seed, same bits, another seed, other disks", "[setup]") {
   auto make = [](std::uint64_t seed) {
     SpeciesSpec gas = random_species("gas", 500, 0.005, 0.01);
     SpeciesSpec fast = random_species("fast", 20, 0.02, 0.02);
@@ -245,7 +245,7 @@ TEST_CASE("a radius from the packing fraction gives exactly that fraction", "[se
   CHECK(inside_region(state, 0, s.placement.region, false, false));
 }
 
-TEST_CASE("random placement near 0.5 succeeds; at 0.6 it stops with the jamming message", "[setup][placement]") {
+TEST_CASE("random placement near 0.5 succeeds, at 0.6 it stops with the jamming message", "[setup][placement]") {
   const InitialState ok =
       build_ok(scene_of({packed_species("gas", 2000, 0.5, PlacementKind::Random)}, BoundaryKind::Periodic));
   CHECK(ok.size() == 2000);
@@ -351,7 +351,7 @@ TEST_CASE("a lattice too dense for its region is refused with how many fit", "[s
   CHECK(contains(build_error(scene_of({s})), "do not fit on a square lattice"));
 }
 
-TEST_CASE("explicit placement keeps the positions and order given; overlaps are refused", "[setup][explicit]") {
+TEST_CASE("explicit placement keeps the positions and order given, overlaps are refused", "[setup][explicit]") {
   SpeciesSpec s = random_species("cradle", 3, 0.1, 0.1);
   s.placement.kind = PlacementKind::Explicit;
   s.placement.positions = {{0.5, 0.5}, {0.3, 0.5}, {0.7, 0.5}};  // touching exactly: allowed

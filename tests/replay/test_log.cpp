@@ -1,0 +1,149 @@
+// ede::Log, the public way to read a run: info, states at times and events, events with full data,
+// verify and diff, and exact numbers in and out.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "ede/ede.hpp"
+#include "tool_runner.hpp"  // temp_path
+
+using ede::test::temp_path;
+
+namespace {
+
+const char* kScene = R"(seed = 3
+[box]
+size = [1.0, 1.0]
+boundary = "periodic"
+[[species]]
+name = "small"
+count = 150
+radius = 0.01
+mass = 1.0
+[[species]]
+name = "big"
+count = 50
+radius = 0.02
+mass = 4.0
+[species.velocity]
+kind = "speed"
+speed = 1.0
+[stop]
+time = 1.0
+)";
+
+ede::Log logged(const std::string& name, const std::vector<ede::Override>& overrides = {}) {
+  const std::string path = temp_path(name);
+  auto sim = ede::Simulation::create(ede::parse_scene_text(kScene, "log-test", overrides).value(), {.log_path = path})
+                 .value();
+  REQUIRE(is_finished(sim.run()));
+  REQUIRE(sim.close());
+  return ede::Log::open(path).value();
+}
+
+}  // namespace
+
+TEST_CASE("Log::info describes the run", "[replay][log]") {
+  const ede::Log log = logged("log-info.ede");
+  const ede::LogInfo& i = log.info();
+  CHECK(i.complete);
+  CHECK_FALSE(i.damaged);
+  CHECK(i.disks == 200);
+  CHECK(i.species_names == std::vector<std::string>{"small", "big"});
+  CHECK(i.species_counts == std::vector<std::uint64_t>{150, 50});
+  CHECK(i.boundary == ede::BoundaryKind::Periodic);
+  CHECK(i.end_time == 1.0L);
+  CHECK(i.final_status == "reached stop.time");
+  CHECK(i.events > 0);
+  const ede::EventCounts c = log.count_events().value();
+  CHECK(c.of(ede::EventKind::Pair) + c.of(ede::EventKind::Wrap) == i.events);
+  CHECK(log.scene().value().seed == 3);
+}
+
+TEST_CASE("Log states: by time, by event, at the end", "[replay][log]") {
+  const ede::Log log = logged("log-states.ede");
+  const ede::State start = log.state_at(0).value();
+  CHECK(start.events == 0);
+  CHECK(start.mass[0] == 1.0);
+  CHECK(start.mass[199] == 4.0);
+  const ede::State end = log.state_at_end().value();
+  CHECK(end.time == 1.0L);
+  CHECK(end.events == log.info().events);
+  // The state after n events is the state at that event's time when no other event shares the time.
+  const std::vector<ede::Event> ev = log.events({.from_event = 100, .to_event = 101}).value();
+  REQUIRE(ev.size() == 1);
+  const ede::State by_event = log.state_at_event(101).value();
+  const ede::State by_time = log.state_at(ev[0].time).value();
+  CHECK(by_event.events == by_time.events);
+  for (std::size_t i = 0; i < by_event.size(); ++i) REQUIRE(by_event.x.values<double>()[i] == by_time.x.values<double>()[i]);
+  // Seeking backwards after forwards gives the same state again.
+  const ede::State again = log.state_at(0).value();
+  CHECK(again.x.values<double>() == start.x.values<double>());
+  CHECK_FALSE(log.state_at(1.5));  // after the end
+  CHECK_FALSE(log.state_at_event(log.info().events + 1));
+}
+
+TEST_CASE("Log events carry positions at contact and velocities before and after", "[replay][log][events]") {
+  const ede::Log log = logged("log-events.ede");
+  const ede::State s0 = log.state_at(0).value();
+  std::size_t pairs = 0;
+  REQUIRE(log.for_each_event({.from_time = 0.2, .to_time = 0.6}, [&](const ede::Event& e) {
+    CHECK(e.time >= 0.2L);
+    CHECK(e.time <= 0.6L);
+    if (e.kind != ede::EventKind::Pair) return true;
+    ++pairs;
+    // At a collision the two disks touch (minimum image in the periodic box).
+    double dx = double(e.xj - e.xi), dy = double(e.yj - e.yi);
+    dx -= std::round(dx), dy -= std::round(dy);
+    const double contact = s0.radius[std::size_t(e.i)] + s0.radius[std::size_t(e.j)];
+    CHECK(std::hypot(dx, dy) == Approx(contact).epsilon(1e-9));
+    // Momentum is conserved by the collision, energy too (elastic).
+    const double mi = s0.mass[std::size_t(e.i)], mj = s0.mass[std::size_t(e.j)];
+    CHECK(double(mi * e.vix + mj * e.vjx) == Approx(double(mi * e.vix_before + mj * e.vjx_before)).margin(1e-12));
+    const double before = mi * double(e.vix_before * e.vix_before + e.viy_before * e.viy_before) +
+                          mj * double(e.vjx_before * e.vjx_before + e.vjy_before * e.vjy_before);
+    const double after = mi * double(e.vix * e.vix + e.viy * e.viy) + mj * double(e.vjx * e.vjx + e.vjy * e.vjy);
+    CHECK(after == Approx(before).epsilon(1e-12));
+    return true;
+  }));
+  CHECK(pairs > 50);
+  const auto all = log.events({}).value();
+  CHECK(all.size() == log.info().events);
+  for (std::size_t k = 0; k < all.size(); ++k) REQUIRE(all[k].index == k);
+}
+
+TEST_CASE("Log::verify and Log::diff", "[replay][log][verify]") {
+  const ede::Log a = logged("log-a.ede"), b = logged("log-b.ede"), other = logged("log-c.ede", {{"seed=4"}});
+  const ede::VerifyReport v = a.verify().value();
+  CHECK(v.identical);
+  CHECK(v.events_compared == a.info().events);
+  CHECK(v.text.rfind("verified: ", 0) == 0);
+  const ede::DiffReport same = a.diff(b).value();
+  CHECK(same.identical);
+  CHECK_FALSE(same.first_difference);
+  const ede::DiffReport differ = a.diff(other).value();
+  CHECK_FALSE(differ.identical);
+  REQUIRE(differ.first_difference);
+  CHECK(*differ.first_difference == 0);  // another seed: another start
+  CHECK(a.content_digest().value() == b.content_digest().value());
+  CHECK(a.content_digest().value() != other.content_digest().value());
+}
+
+TEST_CASE("Log::open refuses what is not a log, naming the file", "[replay][log][errors]") {
+  auto missing = ede::Log::open(temp_path("missing.ede"));
+  REQUIRE_FALSE(missing);
+  CHECK(missing.error().message.find("missing.ede") != std::string::npos);
+  CHECK_THROWS_AS(ede::Log::open(temp_path("missing.ede")).value(), ede::Exception);
+}
+
+TEST_CASE("exact_text and parse_exact read and print every scalar type exactly", "[core][state]") {
+  CHECK(ede::exact_text(0.1, ede::ScalarKind::Double) == "0.10000000000000001");
+  CHECK(ede::exact_text(0.1, ede::ScalarKind::Float) == "0.100000001");
+  CHECK(ede::parse_exact("0.1", ede::ScalarKind::Float).value() == ede::Time(0.1f));
+  CHECK(ede::parse_exact("0.1", ede::ScalarKind::Double).value() == ede::Time(0.1));
+  CHECK(ede::parse_exact("0.1", ede::ScalarKind::LongDouble).value() == 0.1L);
+  CHECK(ede::parse_exact(ede::exact_text(0.1L, ede::ScalarKind::LongDouble), ede::ScalarKind::LongDouble).value() ==
+        0.1L);
+  CHECK_FALSE(ede::parse_exact("0.1x", ede::ScalarKind::Double));
+  CHECK_FALSE(ede::parse_exact("nan", ede::ScalarKind::Double));
+  CHECK_FALSE(ede::parse_exact("1e400", ede::ScalarKind::Double));
+}
