@@ -2,7 +2,7 @@
 //
 // The bytes become a file (memfd); opening it must give a LogReader or a clear error, and replaying
 // everything it holds (the content digest, and seeks by time and event) must succeed or fail with a
-// message: no crash, no hang, no sanitizer report, no huge allocation (tight LogLimits: a log claiming
+// message: no crash, no hang, no sanitizer report, no huge allocation (tight ReadLimits: a log claiming
 // more is refused before allocation). Seed corpus: fuzz/corpus/log (small valid logs of several scalar
 // types and effects, made by scripts/make_fuzz_corpus.sh), which libFuzzer mutates: flipped bits, cut
 // records, forged lengths and offsets.
@@ -34,7 +34,7 @@ inline bool fuzz_log(const std::uint8_t* data, std::size_t size) {
   const MemFile file("fuzz-log");
   if (!file.ok() || !file.write_all(data, size)) return true;
   const std::string path = file.path();
-  ede::LogLimits limits;
+  ede::ReadLimits limits;
   limits.max_disks = 5000;
   limits.max_record_bytes = std::uint64_t(16) << 20;
   auto log = ede::LogReader::open(path, limits);

@@ -9,6 +9,7 @@
 //   pressure.hpp    pressure from the walls and from the virial, with error bars
 //   crater.hpp      crater metrics from a log
 //   error.hpp       Result<T> and ede::Exception
+//   version.hpp     ede::version()
 //
 // Build against it with CMake (find_package(ede) and target ede::ede) or pkg-config (ede); see
 // examples/hello/ for a whole program in thirty lines.
@@ -23,10 +24,4 @@
 #include "ede/scene.hpp"
 #include "ede/simulation.hpp"
 #include "ede/state.hpp"
-
-namespace ede {
-
-// The library's version ("0.2.0").
-const char* version();
-
-}  // namespace ede
+#include "ede/version.hpp"

@@ -1,4 +1,4 @@
-#include "ede/ede.hpp"
+#include "ede/version.hpp"
 // build_info.hpp: the compiler from its predefined macros, the flags from CMake (EDE_BUILD_FLAGS).
 #include "core/build_info.hpp"
 

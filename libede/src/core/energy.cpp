@@ -1,7 +1,7 @@
 // Kinetic energy and momentum of a state, summed in long double so the sum's rounding does not hide the
 // engine's own (the energy-conservation tests compare against 1e-12 relative). For __float128 that sum
 // is coarser than the state: tests of its round-off sum in __float128 themselves.
-#include "engine/engine.hpp"
+#include "core/energy.hpp"
 
 namespace ede {
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/initial_state.hpp"
+#include "core/energy.hpp"
 #include "core/particles.hpp"
 #include "ede/error.hpp"
 #include "ede/events.hpp"
@@ -109,15 +110,5 @@ template <class T>
 Result<std::unique_ptr<EngineApi<T>>> make_engine(const InitialState& initial, const EngineOptions& options,
                                                   const ResumePoint<T>* resume = nullptr);
 
-// Sums over a state, accumulated in long double whatever T is: from the records' velocities, or (the
-// overloads with a time) from the velocities at time t, which differ under gravity.
-template <class T>
-double kinetic_energy(const Particles<T>& p);
-template <class T>
-void momentum(const Particles<T>& p, double& px, double& py);
-template <class T>
-double kinetic_energy(const Particles<T>& p, T t);
-template <class T>
-void momentum(const Particles<T>& p, T t, double& px, double& py);
 
 }  // namespace ede

@@ -48,7 +48,7 @@ LogReader::~LogReader() {
   if (fd_ >= 0) ::close(fd_);
 }
 
-Result<std::shared_ptr<LogReader>> LogReader::open(const std::string& path, const LogLimits& limits) {
+Result<std::shared_ptr<LogReader>> LogReader::open(const std::string& path, const ReadLimits& limits) {
   std::shared_ptr<LogReader> r(new LogReader());
   r->path_ = path;
   r->limits_ = limits;

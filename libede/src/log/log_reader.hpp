@@ -14,7 +14,6 @@
 #include <vector>
 
 #include "ede/error.hpp"
-#include "ede/log.hpp"
 #include "ede/scene.hpp"
 
 namespace ede {
@@ -48,11 +47,16 @@ struct LogRecordRef {
   bool resumable = false;
 };
 
-// LogLimits (what a reader accepts before it allocates) is public: ede/log.hpp.
+// What a reader accepts before it allocates: a log claiming more is refused as implausible (the public
+// ede::LogLimits says the same for ede::Log::open).
+struct ReadLimits {
+  std::uint32_t max_disks = 100000000;
+  std::uint64_t max_record_bytes = std::uint64_t(1) << 31;  // one decompressed record
+};
 
 class LogReader {
  public:
-  static Result<std::shared_ptr<LogReader>> open(const std::string& path, const LogLimits& limits = {});
+  static Result<std::shared_ptr<LogReader>> open(const std::string& path, const ReadLimits& limits = {});
   ~LogReader();
 
   const std::string& path() const { return path_; }
@@ -84,7 +88,7 @@ class LogReader {
   Status scan_records(std::uint64_t from);
 
   std::string path_;
-  LogLimits limits_;
+  ReadLimits limits_;
   int fd_ = -1;
   std::uint64_t file_size_ = 0;
   LogHeaderInfo header_;

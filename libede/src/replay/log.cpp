@@ -71,7 +71,7 @@ Result<std::uint64_t> seek_before(Replay<T>& replay, T t0) {
 Log::Log(std::shared_ptr<Impl> impl) : impl_(std::move(impl)) {}
 
 Result<Log> Log::open(const std::string& path, const LogLimits& limits) {
-  auto reader = LogReader::open(path, limits);
+  auto reader = LogReader::open(path, ReadLimits{limits.max_disks, limits.max_record_bytes});
   if (!reader) return reader.error();
   auto impl = std::make_shared<Impl>();
   impl->reader = std::move(reader).value();

@@ -1,0 +1,19 @@
+// Kinetic energy and momentum of a state (energy.cpp), for the engine, replay and the analyses alike.
+#pragma once
+
+#include "core/particles.hpp"
+
+namespace ede {
+
+// Sums over a state, accumulated in long double whatever T is: from the records' velocities, or (the
+// overloads with a time) from the velocities at time t, which differ under gravity.
+template <class T>
+double kinetic_energy(const Particles<T>& p);
+template <class T>
+void momentum(const Particles<T>& p, double& px, double& py);
+template <class T>
+double kinetic_energy(const Particles<T>& p, T t);
+template <class T>
+void momentum(const Particles<T>& p, T t, double& px, double& py);
+
+}  // namespace ede
