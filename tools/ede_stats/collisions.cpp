@@ -54,8 +54,9 @@ void report(const std::string& path, const LogOverview& o, const CollisionSeries
   std::printf("speed classes           v_ref = %s (initial mean speed): slow < %s, fast > %s\n", brief(v).c_str(),
               brief(0.5 * v).c_str(), brief(1.5 * v).c_str());
   for (const std::size_t k : {std::size_t(0), last})
-    std::printf("  t = %-18s slow %5.1f%%  medium %5.1f%%  fast %5.1f%%\n", brief(s.time[k]).c_str(),
-                c.classes[k].slow_percent, c.classes[k].medium_percent, c.classes[k].fast_percent);
+    std::printf("  t = %-18s slow %5s%%  medium %5s%%  fast %5s%%\n", brief(s.time[k]).c_str(),
+                tools::fixed(c.classes[k].slow_percent, 1).c_str(), tools::fixed(c.classes[k].medium_percent, 1).c_str(),
+                tools::fixed(c.classes[k].fast_percent, 1).c_str());
 }
 
 int run_collisions(const CollisionOptions& opt) {

@@ -1,5 +1,6 @@
 // The ede-stats helpers of stats_cli.hpp: opening logs, reading times and species, writing the CSV and
-// drawing the figure through a temporary file when no -o was given.
+// drawing the figure through a temporary file when no -o was given (the script reads a file, never a
+// pipe). Rejected: a --plot that needs -o, one more rule for users to learn.
 #include "stats_cli.hpp"
 
 #include <unistd.h>
