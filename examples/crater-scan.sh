@@ -1,6 +1,6 @@
 #!/bin/sh
 # Crater depth against projectile mass: 4 masses x 3 seeds of examples/crater.toml (the full 5000-disk bed),
-# 12 ede-sim runs, then every log measured; about 15 s on 2 cores. See docs/crater.md, "Scans".
+# 12 runs (in-process, 2 at a time), then every log measured; about 15 s on 2 cores. See docs/crater.md, "Scans".
 #
 #   examples/crater-scan.sh [OUT_DIR]          (default: crater-scan; set BUILD=... for another build dir)
 #
@@ -12,5 +12,5 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=${BUILD:-$root/build}
 out=${1:-crater-scan}
 "$build/tools/ede-crater" scan "$root/examples/crater.toml" \
-  --param species.projectile.mass --values 5,10,25,50 --seeds 3 --jobs 2 \
-  --out "$out" --metric depth --plot "$out/depth.png"
+  --param species.projectile.mass --values 5,10,25,50 --seeds 3 -j 2 \
+  --out-dir "$out" --metric depth --plot "$out/depth.png"

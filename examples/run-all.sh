@@ -59,7 +59,7 @@ sim "$root/examples/crater.toml" -o "$logs/crater.ede"
 "$tools/ede-render" "$logs/crater.ede" --at 0 --color displacement -o "$out/crater-start.png"
 "$tools/ede-render" "$logs/crater.ede" --at end --color displacement -o "$out/crater-end.png"
 "$tools/ede-crater" scan "$root/examples/crater.toml" --param species.projectile.mass --values 5,10,25,50 \
-  --seeds 3 --out "$logs/crater-scan" --metric depth --plot "$out/crater-depth-vs-mass.png" -q | tail -n 6
+  --seeds 3 --out-dir "$logs/crater-scan" --metric depth --plot "$out/crater-depth-vs-mass.png" -q | tail -n 6
 
 section "crater under gravity: the bed settles, then the projectile falls (examples/crater-gravity.toml)"
 sim "$root/examples/crater-gravity.toml" -o "$logs/crater-gravity.ede"

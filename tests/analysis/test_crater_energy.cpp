@@ -174,5 +174,5 @@ TEST_CASE("crater bed: 'bed' by name, else the species of more than one disk", "
   h.species = {0, 1, 2};
   auto none = select_bed(h, "");
   REQUIRE_FALSE(none);
-  CHECK(none.error().message.find("--bed-species") != std::string::npos);
+  CHECK(none.error().message.find("--species") != std::string::npos);
 }

@@ -112,13 +112,13 @@ TEST_CASE("ede-crater: a crater under gravity is measured at a time asked for, a
 
 TEST_CASE("ede-crater scan: deterministic CSV, the same for --jobs 1 and 2", "[tool][ede-crater]") {
   const std::string common = "scan " + kScene + " --param species.projectile.mass --values 5,25 --seeds 2 -q" +
-                             kSmall + " --set species.bed.count=200 --out ";
+                             kSmall + " --set species.bed.count=200 --out-dir ";
   const std::string a = temp_path("crater-scan-a"), b = temp_path("crater-scan-b"), c = temp_path("crater-scan-c");
   const ToolRun ra = crater(common + a + " --jobs 2", "scan-a");
   INFO(ra.out << ra.err);
   REQUIRE(ra.status == 0);
   REQUIRE(crater(common + b + " --jobs 2", "scan-b").status == 0);
-  REQUIRE(crater(common + c + " --jobs 1", "scan-c").status == 0);
+  REQUIRE(crater(common + c + " -j 1", "scan-c").status == 0);
 
   const std::string runs = read_file(a + "/scan.csv"), aggregate = read_file(a + "/scan-aggregate.csv");
   CHECK(runs == read_file(b + "/scan.csv"));
@@ -149,10 +149,27 @@ TEST_CASE("ede-crater scan: deterministic CSV, the same for --jobs 1 and 2", "[t
   CHECK(std::filesystem::exists(a + "/v1-s2.txt"));
 }
 
+TEST_CASE("ede-crater scan: each run's log is the one ede-sim writes for the same overrides", "[tool][ede-crater]") {
+  const std::string dir = temp_path("crater-scan-same");
+  const ToolRun r = crater("scan " + kScene + " --param physics.restitution --values 0.5 --first-seed 3 -q" + kSmall +
+                               " --set species.bed.count=150 --set stop.time=0.05 --out-dir " + dir,
+                           "scan-same");
+  INFO(r.out << r.err);
+  REQUIRE(r.status == 0);
+  const std::string alone = sim_log(kScene,
+                                    kSmall + " --set species.bed.count=150 --set stop.time=0.05 --set "
+                                             "physics.restitution=0.5 --set seed=3",
+                                    temp_path("crater-scan-same-alone.ede"), "crater-sim-same");
+  const std::string in_scan = read_file(dir + "/v0-s3.ede");
+  REQUIRE(in_scan.size() > 1000);
+  CHECK(in_scan == read_file(alone));
+  CHECK(read_file(dir + "/v0-s3.txt").find("ended            ") != std::string::npos);  // the run's summary
+}
+
 TEST_CASE("ede-crater scan: vector values, and runs that end before the energy fraction", "[tool][ede-crater]") {
   const std::string dir = temp_path("crater-scan-xi");
   const ToolRun r = crater("scan " + kScene + " --param species.projectile.velocity.vector --values '[0,-3],[0, -4]'" +
-                               kSmall + " --set species.bed.count=200 --set stop.time=0.1 -q --jobs 2 --out " + dir,
+                               kSmall + " --set species.bed.count=200 --set stop.time=0.1 -q --jobs 2 --out-dir " + dir,
                            "scan-vector");
   INFO(r.out << r.err);
   REQUIRE(r.status == 0);
@@ -169,7 +186,7 @@ TEST_CASE("ede-crater: bad input gives one clear message", "[tool][ede-crater]")
   CHECK(contains(missing.err, "ede-crater: error: cannot open"));
 
   const std::string log = make_crater_log("crater-bad.ede", " --set species.bed.count=200");
-  const ToolRun species = crater(log + " --bed-species sand", "species");
+  const ToolRun species = crater(log + " --species sand", "species");
   CHECK(species.status == 1);
   CHECK(contains(species.err, "there is no species 'sand' in the log; it has 'bed' (200 disks), 'projectile' (1 disk)"));
 
@@ -180,13 +197,13 @@ TEST_CASE("ede-crater: bad input gives one clear message", "[tool][ede-crater]")
   CHECK(late.status == 1);
   CHECK(contains(late.err, "after the end of the log"));
 
-  const ToolRun key = crater("scan " + kScene + " --param species.projectile.mas --values 1,2 --out " +
+  const ToolRun key = crater("scan " + kScene + " --param species.projectile.mas --values 1,2 --out-dir " +
                                  temp_path("crater-scan-bad"),
                              "key");
   CHECK(key.status == 1);
   CHECK(contains(key.err, "species[1].mas (species 'projectile'): unknown key; did you mean 'mass'?"));
   CHECK_FALSE(std::filesystem::exists(temp_path("crater-scan-bad")));  // nothing ran
-  const ToolRun value = crater("scan " + kScene + " --param physics.restitution --values 0.5,2 --out " +
+  const ToolRun value = crater("scan " + kScene + " --param physics.restitution --values 0.5,2 --out-dir " +
                                    temp_path("crater-scan-bad"),
                                "value");
   CHECK(value.status == 1);
@@ -209,4 +226,9 @@ TEST_CASE("ede-crater: a bad command line exits with status 2 and CLI11's messag
   CHECK(crater("", "nothing").status == 2);
   CHECK(crater("--help", "help").status == 0);
   CHECK(crater("scan --help", "help-scan").status == 0);
+  for (const std::string command : {"--version", "measure --version", "scan --version"}) {
+    const ToolRun v = crater(command, "version");
+    CHECK(v.status == 0);
+    CHECK(v.out.rfind("ede-crater", 0) == 0);
+  }
 }

@@ -262,6 +262,37 @@ TEST_CASE("ede-render makes movies: PNG frames, MP4 with ffmpeg", "[tool][ede-re
   CHECK(fs::file_size(mp4) > 0);
 }
 
+TEST_CASE("ede-render --every: frames at from, from + DT, ... up to --to; --to end is the log's end",
+          "[tool][ede-render]") {
+  const std::string log = make_log("every", kTinyScene);
+  const std::string dir = temp_path("render-every");
+  fs::remove_all(dir);
+  const ToolRun r = render(log + " --from 0.25 --to end --every 0.25 --width 200 --no-legend -o " + dir, "every");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(r.out.find("wrote 4 frames") != std::string::npos);  // t = 0.25, 0.5, 0.75, 1
+  CHECK_FALSE(fs::exists(fs::path(dir) / "frame_00004.png"));
+  {  // the last frame is t = 1: the ball at x = 1.3, pixel (130, 40) at 100 pixels per unit
+    const Png last((fs::path(dir) / "frame_00003.png").string());
+    CHECK(last.rgb(130, 40) == kSecondSpecies);
+    CHECK(last.rgb(148, 40) == kBackground);
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("ede-render --species draws only the disks of that species", "[tool][ede-render]") {
+  const std::string log = make_log("only", kTinyScene);
+  const std::string png = temp_path("render-only.png");
+  const ToolRun r = render(log + " --at 1 --width 400 --no-legend --species ball -o " + png, "only");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(r.out.find("1 disks") != std::string::npos);
+  const Png image(png);
+  CHECK(image.rgb(260, 80) == kSecondSpecies);  // the ball keeps its species colour
+  CHECK(image.rgb(80, 140) == kBackground);     // the bed is not drawn
+  CHECK(image.rgb(160, 140) == kBackground);
+}
+
 TEST_CASE("ede-render keeps the frames with a warning when ffmpeg is missing", "[tool][ede-render]") {
   const std::string log = make_log("noffmpeg", kTinyScene);
   const std::string mp4 = temp_path("render-noffmpeg.mp4"), frames = temp_path("render-noffmpeg_frames");
@@ -286,8 +317,12 @@ TEST_CASE("ede-render rejects bad input with a clear message and a non-zero exit
   const Case cases[] = {
       {temp_path("no-such-log.ede") + " --at 0 -o " + png, "no-such-log.ede"},
       {log + " --at 2 -o " + png, "after the end of the log"},
-      {log + " --at soon -o " + png, "is not a number"},
-      {log + " --at 1 --mark-species comet -o " + png, "no such species"},
+      {log + " --at soon -o " + png, "--at 'soon' is not a time"},
+      {log + " --at 1 --mark-species comet -o " + png, "--mark-species: the log has no species 'comet'"},
+      {log + " --at 1 --species comet -o " + png, "--species: the log has no species 'comet'; its species are: bed, ball"},
+      {log + " --frames 2 --to 7 -o " + temp_path("render-bad-late"), "--to 7 is after the end of the log (t = 1)"},
+      {log + " --every 0 -o " + temp_path("render-bad-every"), "--every must be > 0"},
+      {log + " --every 0.1 --frames 2 -o " + temp_path("render-bad-both"), "excludes"},
       {log + " --at 1 -o " + temp_path("render-bad.jpg"), ".png or .svg"},
       {log + " -o " + png, "give --at"},
       {log + " --at 1 --frames 3 -o " + temp_path("render-bad-dir"), "not both"},
@@ -312,4 +347,7 @@ TEST_CASE("ede-render: a bad command line exits with status 2 and CLI11's messag
   CHECK(render(log + " --at 1 --width 3 -o " + png, "bad-width").status == 2);
   CHECK(render(log + " --at 1", "no-output").status == 2);
   CHECK(render("--help", "help").status == 0);
+  const ToolRun version = render("--version", "version");
+  CHECK(version.status == 0);
+  CHECK(version.out.rfind("ede-render, ede ", 0) == 0);
 }

@@ -76,6 +76,20 @@ TEST_CASE("ede-stats hist pools times, warns when they are too close, selects a 
   CHECK(stats("hist " + log + " --from 0.5", "nofrom").status == 2);
 }
 
+TEST_CASE("ede-stats hist: --to end is the end of the log, as is leaving --to out", "[tool][ede-stats]") {
+  const std::string log = make_log("to-end.ede", "examples/scenes/mixture.toml", " --set stop.time=0.5");
+  const std::string a = scratch("to-end-a.csv"), b = scratch("to-end-b.csv");
+  const ToolRun with_end = stats("hist " + log + " --from 0.1 --to end --every 0.2 -o " + a, "to-end-a");
+  INFO(with_end.err);
+  REQUIRE(with_end.status == 0);
+  CHECK_THAT(with_end.out, Catch::Contains("t = 0.1 to 0.5 every 0.2 (3 times pooled)"));
+  REQUIRE(stats("hist " + log + " --from 0.1 --every 0.2 -o " + b, "to-end-b").status == 0);
+  CHECK(read_file(a) == read_file(b));
+  const ToolRun late = stats("hist " + log + " --from 0.1 --to 0.7 --every 0.2", "to-late");
+  CHECK(late.status == 1);
+  CHECK_THAT(late.err, Catch::Contains("--to 0.7 is after the end of the log (t = 0.5); --to end gives the last state"));
+}
+
 TEST_CASE("ede-stats hist --plot draws PNG and SVG", "[tool][ede-stats]") {
   const std::string log = make_log("hist-plot.ede");
   for (const std::string format : {"png", "svg"}) {
@@ -110,13 +124,51 @@ TEST_CASE("ede-stats species: table and CSV per species and for all, over time",
   check_figure(figure, "svg");
 }
 
+TEST_CASE("ede-stats species --species keeps one species' rows", "[tool][ede-stats]") {
+  const std::string log = make_log("species-one.ede", "examples/scenes/mixture.toml", " --set stop.time=0.5");
+  const std::string csv = scratch("species-one.csv");
+  const ToolRun r = stats("species " + log + " --every 0.25 --species heavy -o " + csv, "species-one");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const std::vector<std::string> rows = lines(read_file(csv));
+  REQUIRE(rows.size() == 1 + 3);  // t = 0, 0.25, 0.5; heavy only
+  for (std::size_t k = 1; k < rows.size(); ++k) CHECK(csv_fields(rows[k])[1] == "heavy");
+  CHECK(rows[1] == "0,heavy,250,4,4,1,2,2,0,0");
+  const ToolRun bad = stats("species " + log + " --species medium", "species-one-bad");
+  CHECK(bad.status == 1);
+  CHECK_THAT(bad.err, Catch::Contains("the log has no species 'medium'; its species are: light, heavy"));
+}
+
+TEST_CASE("ede-stats energy --from --to: the grid within the range, E(0) still at t = 0", "[tool][ede-stats]") {
+  const std::string log = make_log("e-range.ede", "examples/gas.toml",
+                                   " --set stop.time=0.1 --set physics.restitution=0.9");
+  const std::string whole = scratch("e-range-whole.csv"), part = scratch("e-range-part.csv");
+  REQUIRE(stats("energy " + log + " --every 0.01 -o " + whole, "e-range-whole").status == 0);
+  const ToolRun r = stats("energy " + log + " --from 0.05 --to end --every 0.01 -o " + part, "e-range-part");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK_THAT(r.out, Catch::Contains("t = 0.05 to 0.1"));
+  const std::vector<std::string> all = lines(read_file(whole)), some = lines(read_file(part));
+  REQUIRE(all.size() == 1 + 11);
+  REQUIRE(some.size() == 1 + 6);
+  // The ends of the range are grid times of both (0.05 = 5 x 0.01 and 0.1 = 10 x 0.01 in double): the
+  // energy and E/E(0) there agree to the last digit (Haff's tau does not: its calibration point is the
+  // first grid time after 2 collisions per disk, which differs between the grids).
+  CHECK(csv_fields(some[1])[2] == "0.050000000000000003");
+  CHECK(csv_fields(some[1])[2] == csv_fields(all[6])[2]);
+  for (const std::size_t column : {std::size_t(3), std::size_t(4)}) {
+    CHECK(csv_fields(some[1])[column] == csv_fields(all[6])[column]);
+    CHECK(csv_fields(some.back())[column] == csv_fields(all.back())[column]);
+  }
+}
+
 TEST_CASE("ede-stats energy: one curve per log labelled by restitution, conserved when elastic", "[tool][ede-stats]") {
   const std::string opts = " --set stop.collisions_per_particle=100 --set stop.time=0.1";
   const std::string elastic = make_log("e1.ede", "examples/gas.toml", opts);
   const std::string cooling = make_log("e09.ede", "examples/gas.toml", opts + " --set physics.restitution=0.9");
   const std::string csv = scratch("energy.csv");
   const std::string figure = scratch("energy.png");
-  const ToolRun r = stats("energy " + elastic + " " + cooling + " --dt 0.001 -o " + csv + " --plot " + figure, "energy");
+  const ToolRun r = stats("energy " + elastic + " " + cooling + " --every 0.001 -o " + csv + " --plot " + figure, "energy");
   INFO(r.err);
   REQUIRE(r.status == 0);
   check_figure(figure, "png");
@@ -194,4 +246,11 @@ TEST_CASE("ede-stats: a bad command line exits with status 2 and CLI11's message
   CHECK(stats("histogram " + scratch("any.ede"), "bad-subcommand").status == 2);
   CHECK(stats("--help", "help").status == 0);
   CHECK(stats("energy --help", "help-energy").status == 0);
+  for (const std::string command : {"", "hist", "species", "energy", "collisions", "pressure"}) {
+    const ToolRun v = stats(command + " --version", "version");
+    INFO(command);
+    CHECK(v.status == 0);
+    CHECK(v.out.rfind("ede-stats" + (command.empty() ? "" : " " + command) + ", ede ", 0) == 0);
+  }
+  CHECK(stats("energy " + scratch("any.ede") + " --dt 0.1", "old-dt").status == 2);  // now --every
 }

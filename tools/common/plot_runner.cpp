@@ -1,13 +1,10 @@
-// run_plot_script; see plot_runner.hpp. Arguments are passed without a shell (fork + execv), so file
-// names with spaces or quotes are safe.
+// run_plot_script; see plot_runner.hpp. The script runs through run_program (spawn.hpp): no shell, so
+// file names with spaces or quotes are safe, and its stderr comes back for the message.
 #include "plot_runner.hpp"
 
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <cstdio>
-#include <fstream>
-#include <sstream>
+#include "spawn.hpp"
 
 #ifndef EDE_PLOT_DIR
 #define EDE_PLOT_DIR "tools/plot"
@@ -15,44 +12,16 @@
 
 namespace ede::tools {
 
-namespace {
-
-std::string python() { return access("/usr/bin/python3", X_OK) == 0 ? "/usr/bin/python3" : "python3"; }
-
-std::string read_all(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-}  // namespace
-
 Status run_plot_script(const std::string& script, const std::vector<std::string>& args) {
   const std::string path = std::string(EDE_PLOT_DIR) + "/" + script;
-  if (access(path.c_str(), R_OK) != 0) return Error{"plotting script not found: " + path};
-  char err_template[] = "/tmp/ede-plot-XXXXXX";
-  const int err_fd = mkstemp(err_template);
-  if (err_fd < 0) return Error{"cannot create a temporary file for the plotting script's messages"};
-  const pid_t pid = fork();
-  if (pid < 0) return Error{"cannot start python3"};
-  if (pid == 0) {
-    dup2(err_fd, 2);
-    std::vector<std::string> argv_s = {python(), path};
-    argv_s.insert(argv_s.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    for (std::string& a : argv_s) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    execvp(argv[0], argv.data());
-    std::fprintf(stderr, "cannot run %s\n", argv[0]);
-    _exit(127);
-  }
-  int status = 0;
-  waitpid(pid, &status, 0);
-  close(err_fd);
-  const std::string err = read_all(err_template);
-  std::remove(err_template);
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return Ok{};
+  if (::access(path.c_str(), R_OK) != 0) return Error{"plotting script not found: " + path};
+  const bool debian = ::access("/usr/bin/python3", X_OK) == 0;
+  SpawnRequest request{{debian ? "/usr/bin/python3" : "python3", path}, !debian, ""};
+  request.argv.insert(request.argv.end(), args.begin(), args.end());
+  auto run = run_program(request);
+  if (!run) return run.error();
+  if (run.value().exit_status == 0) return Ok{};
+  const std::string& err = run.value().err;
   if (err.find("No module named 'matplotlib'") != std::string::npos)
     return Error{"figures need matplotlib: install python3-matplotlib (scripts/install-deps.sh does)"};
   return Error{"the plotting script " + script + " failed:\n" + err};

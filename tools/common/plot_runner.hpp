@@ -2,6 +2,7 @@
 //
 // Scripts run with Debian's /usr/bin/python3 (where python3-matplotlib installs), falling back to python3
 // on PATH; a missing matplotlib gives a message saying what to install, not a Python traceback.
+// Rejected: drawing in C++ (a plotting library to link for figures matplotlib already draws well).
 #pragma once
 
 #include <string>

@@ -1,4 +1,4 @@
-// The CSV files ede-crater writes: the surface profiles, the energy curve, the metric columns of a scan.
+// The CSV files ede-crater measure writes: the surface profiles and the energy curve; quoting for fields.
 //
 // Plain comma-separated tables with one header line, numbers with 17 significant digits (they read back to
 // the same double), so scripts and the plotting script need no special reader. Rejected: one file with
@@ -9,17 +9,6 @@
 #include "crater_tool.hpp"
 
 namespace ede::crater_tool {
-
-const std::vector<std::string> kMetricNames = {"count",        "depth",      "width",         "area",
-                                               "depth_below_mean", "deepest_x", "removed_area", "raised_area",
-                                               "detached"};
-
-std::vector<double> metric_values(const CraterMeasurement& m) {
-  const CraterMetrics& c = m.report.metrics;
-  return {double(m.report.displaced.size()), c.depth,          c.width,       c.area,
-          c.depth_below_mean,              c.deepest_x,      c.removed_area, c.raised_area,
-          double(m.report.after.detached)};
-}
 
 std::string csv_field(const std::string& text) {
   if (text.find_first_of(",\"\n") == std::string::npos) return text;

@@ -4,8 +4,8 @@
 // main calls once the command line is parsed (the pattern of ede-replay). Both subcommands measure logs
 // through one function (measure_log), so a scan's numbers are exactly what `ede-crater LOG` prints for
 // each of its logs. CSV files hold numbers with the digits that read back to the same double.
-// Rejected: a scan that keeps the measurements of its runs from ede-sim's own output (--final-state), which
-// would tie the metric to each run's stop and make a scan's numbers differ from `ede-crater LOG`'s.
+// Rejected: a scan that keeps the measurements of its runs from the runs themselves (the final state),
+// which would tie the metric to each run's stop and make a scan's numbers differ from `ede-crater LOG`'s.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -14,10 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "analysis/crater.hpp"
+#include "ede/ede.hpp"
+#include "number_text.hpp"
 #include "report_error.hpp"
-#include "ede/error.hpp"
-#include "exact_text.hpp"
 
 namespace ede::crater_tool {
 
@@ -43,10 +42,10 @@ using tools::exact;  // exact text of a double (17 significant digits)
 
 // The options of a measurement, as typed; shared by `measure` and `scan` (measure_options.cpp).
 struct MeasureOptions {
-  std::string at;                // --at T: a time, read exactly in the log's scalar type
+  std::string at;                // --at T|end: a time, read exactly in the log's scalar type
   std::string before;            // --before T: the reference state's time (default: the log's start)
   double energy_fraction = 0.1;  // --energy-fraction F
-  std::string bed_species;       // --bed-species NAME
+  std::string species;           // --species NAME: the bed's species
   std::string threshold = "0.5r", bin_width = "2r", drop_threshold = "1r", link_gap = "2r";
   bool keep_detached = false;
   std::size_t points = 501;      // --curve-points
@@ -62,11 +61,11 @@ Result<CraterSettings> settings_from(const MeasureOptions& o);
 struct MeasuredLog {
   CraterMeasurement crater;
   std::string run_status;  // "reached stop.energy_fraction", or "incomplete: ..." for a log cut short
-  std::uint32_t disks = 0;
+  std::uint64_t disks = 0;
   std::string scalar;
 };
 
-// Opens the log and measures its crater (dispatching on the log's scalar type).
+// Opens the log and measures its crater.
 Result<MeasuredLog> measure_log(const std::string& path, const MeasureOptions& o);
 
 // CSV output (crater_csv.cpp). A field holding a comma or a quote is quoted.
@@ -77,26 +76,5 @@ Status write_profile_csv(const std::string& path, const CraterMeasurement& m);
 Status write_energy_csv(const std::string& path, const CraterMeasurement& m);
 // A text file written whole; the error names the file.
 Status write_text_file(const std::string& path, const std::string& text);
-
-// The metric columns of the scan CSV, in order, and their values for one measurement.
-extern const std::vector<std::string> kMetricNames;  // count, depth, width, area, ...
-std::vector<double> metric_values(const CraterMeasurement& m);
-
-// Running programs, a few at a time (scan_jobs.cpp).
-struct Job {
-  std::vector<std::string> argv;             // argv[0] is the program's path
-  std::string stdout_path, stderr_path;      // where its output goes
-  std::string label;                         // for progress messages
-};
-struct JobResult {
-  bool started = false;
-  int exit_status = -1;  // when it exited; -1 if killed by a signal or not started
-  std::string failure;   // why it did not exit 0 (empty if it did)
-};
-// Runs the jobs in order, at most `parallel` at once (fork + execv, no shell). After a job fails with an
-// exit status not in `acceptable`, no further job is started; the running ones are waited for. Results
-// are in the jobs' order whatever order they finish in.
-std::vector<JobResult> run_jobs(const std::vector<Job>& jobs, std::size_t parallel, const std::vector<int>& acceptable,
-                                bool progress);
 
 }  // namespace ede::crater_tool

@@ -1,12 +1,13 @@
 // ede-crater: the crater a projectile leaves in a bed of disks, measured from event logs (docs/crater.md).
 //
-//   ede-crater LOG [--at T | --energy-fraction F] [--bed-species NAME] [--threshold X] [-o CSV] [--plot FILE]
-//   ede-crater scan SCENE --param KEY --values V1,V2,... [--seeds K] [--jobs J] [--set k=v]... [--out DIR]
+//   ede-crater LOG [--at T|end | --energy-fraction F] [--species NAME] [--threshold X] [-o CSV] [--plot FILE]
+//   ede-crater scan SCENE --param KEY --values V1,V2,... [--seeds K] [-j J] [--set k=v]... [--out-dir DIR]
 //
 // Thin: one file per subcommand, each parsing its options and calling libede (ede/crater.hpp); the
-// numbers come from logs by replay, never from running the physics here (a scan runs ede-sim, then
-// measures the logs). A first argument that is not a subcommand makes the command `measure`. Exit status:
-// 0 success, 1 bad input (a missing log, an unknown species, a scene error), 2 a bad command line.
+// numbers come from logs by replay (a scan runs its scenes through ede::Simulation first, then measures
+// the logs). A first argument that is not a subcommand makes the command `measure`. Exit status: 0
+// success, 1 bad input (a missing log, an unknown species, a scene error), 2 a bad command line.
+// Rejected: a separate ede-scan program, which would repeat every measuring option.
 #include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
@@ -24,6 +25,7 @@ int main(int argc, char** argv) {
   };
 
   // `ede-crater LOG ...` is `ede-crater measure LOG ...`.
+  ede::tools::add_version_flags(app, "ede-crater");
   if (const auto stop = ede::tools::parse_command_line(app, argc, argv, "measure")) return *stop;
   for (const auto& [name, run] : commands)
     if (app.got_subcommand(name)) return run();

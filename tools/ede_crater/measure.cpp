@@ -38,8 +38,8 @@ void print_report(const Options& opt, const MeasuredLog& ml) {
   const CraterLengths& l = m.report.lengths;
   const CraterMetrics& c = m.report.metrics;
   const auto in_r = [&](double v) { return brief(v) + " (" + brief(v / l.bed_radius) + " r_bed)"; };
-  std::printf("log               %s: %u disks, %s; %s\n", opt.log.c_str(), ml.disks, ml.scalar.c_str(),
-              ml.run_status.c_str());
+  std::printf("log               %s: %llu disks, %s; %s\n", opt.log.c_str(), static_cast<unsigned long long>(ml.disks),
+              ml.scalar.c_str(), ml.run_status.c_str());
   std::printf("bed               %zu disks: %s\n", m.bed.disks, m.bed.reason.c_str());
   std::printf("measured at       t = %s, after %llu events: %s\n", exact(m.time).c_str(),
               static_cast<unsigned long long>(m.events), m.when.c_str());

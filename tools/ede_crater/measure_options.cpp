@@ -2,17 +2,16 @@
 // measures a log with them.
 //
 // Lengths are typed as "0.002" (box units) or "0.5r" (bed radii), so a default that scales with the grain
-// size and an absolute value read the same way on the command line. --at is parsed in the log's scalar type
-// (exact_text.hpp, as ede-replay does), so --at 0.25 means exactly the value of T a run stopping at
-// stop.time = 0.25 reaches.
+// size and an absolute value read the same way on the command line. --at and --before are read in the
+// log's scalar type (time_option.hpp, as every tool reads times), so --at 0.25 means exactly the value of
+// T a run stopping at stop.time = 0.25 reaches.
 // Rejected: separate --threshold-radii options, which double every option for one unit.
 #include <memory>
 #include <optional>
 
 #include "crater_tool.hpp"
 #include "open_log.hpp"
-#include "log/log_reader.hpp"
-#include "core/scalar_dispatch.hpp"
+#include "time_option.hpp"
 
 namespace ede::crater_tool {
 
@@ -25,11 +24,11 @@ Result<CraterLength> parse_length(const std::string& text, const char* option) {
     l.in_bed_radii = true;
     number.pop_back();
   }
-  const std::optional<double> value = tools::parse_exact<double>(number);
-  if (!value || *value < 0)
+  const Result<Time> value = parse_exact(number, ScalarKind::Double);
+  if (!value || value.value() < 0)
     return Error{std::string(option) + " '" + text +
                  "' is not a length: give a number >= 0 in box units (0.002) or in bed radii (0.5r)"};
-  l.value = *value;
+  l.value = double(value.value());
   return l;
 }
 
@@ -45,7 +44,7 @@ void add_measure_options(CLI::App& app, MeasureOptions& o) {
   app.add_option("--before", o.before,
                  "compare with the bed at this time instead of the start (under gravity: after the bed has "
                  "settled, before the impact)");
-  app.add_option("--bed-species", o.bed_species,
+  app.add_option("--species", o.species,
                  "the bed's species (default: 'bed', else every species of more than one disk)");
   app.add_option("--threshold", o.threshold,
                  "displaced = moved by more than this; box units (0.002) or bed radii (0.5r; the default)");
@@ -77,37 +76,44 @@ Result<CraterSettings> settings_from(const MeasureOptions& o) {
   return s;
 }
 
-Result<MeasuredLog> measure_log(const std::string& path, const MeasureOptions& o) {
+namespace {
+
+// The request the options make for this log: times read in its scalar type.
+Result<CraterRequest> request_for(const Log& log, const MeasureOptions& o) {
   auto settings = settings_from(o);
   if (!settings) return settings.error();
-  auto log = ede::tools::open_log_warning("ede-crater", path);
+  CraterRequest req;
+  req.energy_fraction = o.energy_fraction;
+  req.bed_species = o.species;
+  req.settings = settings.value();
+  req.curve_points = o.points;
+  if (!o.at.empty()) {
+    auto at = tools::read_time(log, o.at, "--at");
+    if (!at) return at.error();
+    req.at_end = at.value().end;
+    if (!req.at_end) req.at = at.value().t;
+  }
+  if (!o.before.empty()) {
+    auto before = tools::read_time(log, o.before, "--before", false);
+    if (!before) return before.error();
+    req.before = before.value().t;
+  }
+  return req;
+}
+
+}  // namespace
+
+Result<MeasuredLog> measure_log(const std::string& path, const MeasureOptions& o) {
+  auto log = tools::open_log_warning("ede-crater", path);
   if (!log) return log.error();
-  std::shared_ptr<const LogReader> reader = log.value();
-  auto crater = with_scalar(reader->header().scalar, [&]<class T>() -> Result<CraterMeasurement> {
-    CraterRequest req;
-    req.energy_fraction = o.energy_fraction;
-    req.bed_species = o.bed_species;
-    req.settings = settings.value();
-    req.curve_points = o.points;
-    if (!o.at.empty()) {
-      const tools::ReadTime<T> t = tools::read_time<T>(o.at);
-      if (t.kind == tools::TimeText::NotANumber || t.kind == tools::TimeText::Negative)
-        return Error{"--at '" + o.at + "' is not a time: give a number >= 0 (such as 0.25) or 'end'"};
-      req.at_end = t.kind == tools::TimeText::End;
-      if (!req.at_end) req.at = t.value;
-    }
-    if (!o.before.empty()) {
-      const tools::ReadTime<T> t = tools::read_time<T>(o.before);
-      if (t.kind != tools::TimeText::Number)
-        return Error{"--before '" + o.before + "' is not a time: give a number >= 0 (such as 0.4)"};
-      req.before = t.value;
-    }
-    return measure_crater(reader, req);
-  });
+  auto request = request_for(log.value(), o);
+  if (!request) return request.error();
+  auto crater = measure_crater(log.value(), request.value());
   if (!crater) return crater.error();
-  MeasuredLog m{std::move(crater).value(), {}, reader->header().disks, to_string(reader->header().scalar)};
-  m.run_status = reader->complete() ? reader->final_status() : "incomplete: " + reader->incomplete_reason();
-  return m;
+  const LogInfo& info = log.value().info();
+  return MeasuredLog{std::move(crater).value(),
+                     info.complete ? info.final_status : "incomplete: " + info.incomplete_reason, info.disks,
+                     to_string(info.scalar)};
 }
 
 }  // namespace ede::crater_tool

@@ -6,9 +6,9 @@
 // shaping. Rejected: pango (a second dependency for a handful of labels).
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "draw.hpp"
+#include "number_text.hpp"
 
 namespace ede::render {
 
@@ -22,12 +22,6 @@ struct Style {
     row = 1.45 * font;
   }
 };
-
-std::string number(double v, const char* format = "%.4g") {
-  char b[32];
-  std::snprintf(b, sizeof b, format, v);
-  return b;
-}
 
 double text_width(cairo_t* cr, const std::string& s) {
   cairo_text_extents_t e;
@@ -98,7 +92,7 @@ void draw_bar(cairo_t* cr, const ColourBar& bar, const Style& st, double x, doub
   cairo_set_line_width(cr, 1);
   cairo_stroke(cr);
   for (int k = 0; k <= 2; ++k) {
-    const std::string t = k == 0 ? "0" : number(bar.max * k / 2, "%.3g") + (k == 2 ? "+" : "");
+    const std::string t = k == 0 ? "0" : tools::brief(bar.max * k / 2, 3) + (k == 2 ? "+" : "");
     const double tx = x + w * k / 2, tw = text_width(cr, t);
     cairo_new_path(cr);
     cairo_move_to(cr, tx, gy + gh);
@@ -113,7 +107,7 @@ void draw_bar(cairo_t* cr, const ColourBar& bar, const Style& st, double x, doub
 void draw_label(cairo_t* cr, const Frame& f, ImageSize size) {
   const Style st(size);
   set_font(cr, st);
-  const std::string text = "t = " + number(f.time) + "    N = " + std::to_string(f.size());
+  const std::string text = "t = " + tools::brief(double(f.time), 4) + "    N = " + std::to_string(f.size());
   const double w = text_width(cr, text) + 2 * st.pad, h = st.row + st.pad;
   panel(cr, st.pad, st.pad, w, h, st.pad / 2);
   text_at(cr, 2 * st.pad, st.pad + h / 2, text);

@@ -4,17 +4,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
+
+#include "number_text.hpp"
 
 namespace ede::render {
 
 namespace {
-
-std::string number(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3g", v);
-  return b;
-}
 
 std::string species_name(const Frame& f, int s) {
   return s >= 0 && std::size_t(s) < f.species_names.size() ? f.species_names[std::size_t(s)] : std::to_string(s);
@@ -77,7 +72,7 @@ void by_speed(const Frame& f, Colouring& c) {
   const std::string names[] = {"slow  v < 0.5 " + bar, "medium", "fast  v > 1.5 " + bar};
   for (std::size_t k = 0; k < 3; ++k)
     c.legend.push_back({speed_colour(SpeedClass(k)), names[k] + "  (" + std::to_string(n[k]) + ")"});
-  c.legend.push_back({Rgb{}, bar + " = " + number(reference) +
+  c.legend.push_back({Rgb{}, bar + " = " + tools::brief(reference, 3) +
                                  (from_start ? " (initial mean speed)" : " (mean speed now: all at rest at t = 0)"),
                       LegendEntry::Swatch::None});
 }
@@ -108,12 +103,6 @@ Rgb speed_colour(SpeedClass c) {
   return Rgb::hex(0xD55E00);
 }
 
-SpeedClass speed_class(double speed, double initial_mean_speed) {
-  if (speed < 0.5 * initial_mean_speed) return SpeedClass::Slow;
-  if (speed > 1.5 * initial_mean_speed) return SpeedClass::Fast;
-  return SpeedClass::Medium;
-}
-
 Rgb displacement_colour(double u) {
   static const unsigned stops[] = {0xFFFFCC, 0xFFEDA0, 0xFED976, 0xFEB24C, 0xFD8D3C,
                                    0xFC4E2A, 0xE31A1C, 0xBD0026, 0x800026};
@@ -123,44 +112,6 @@ Rgb displacement_colour(double u) {
   const double w = x - k;
   const Rgb a = Rgb::hex(stops[k]), b = Rgb::hex(stops[k + 1]);
   return {a.r + (b.r - a.r) * w, a.g + (b.g - a.g) * w, a.b + (b.b - a.b) * w};
-}
-
-Result<std::vector<bool>> marked_disks(const Frame& f, const std::vector<std::string>& names) {
-  std::vector<int> chosen;
-  for (const std::string& name : names) {
-    const auto it = std::find(f.species_names.begin(), f.species_names.end(), name);
-    if (it == f.species_names.end()) {
-      std::string known;
-      for (const std::string& s : f.species_names) known += (known.empty() ? "'" : ", '") + s + "'";
-      return Error{"--mark-species '" + name + "': no such species in the log (it has " + known + ")"};
-    }
-    chosen.push_back(int(it - f.species_names.begin()));
-  }
-  if (names.empty()) {
-    const std::vector<std::size_t> n = species_counts(f);
-    const bool all_single = std::all_of(n.begin(), n.end(), [](std::size_t k) { return k == 1; });
-    for (std::size_t s = 0; s < n.size() && !all_single; ++s)
-      if (n[s] == 1) chosen.push_back(int(s));
-  }
-  std::vector<bool> marked(f.size(), false);
-  for (std::size_t i = 0; i < f.size(); ++i)
-    marked[i] = std::find(chosen.begin(), chosen.end(), f.species[i]) != chosen.end();
-  return marked;
-}
-
-double displacement_scale(const Frame& f, const std::vector<bool>& marked) {
-  std::vector<double> d;
-  double radius_sum = 0;
-  for (std::size_t i = 0; i < f.size(); ++i) {
-    if (!marked[i]) d.push_back(f.displacement[i]);
-    radius_sum += f.r[i];
-  }
-  if (!d.empty()) {
-    const std::size_t k = std::size_t(std::ceil(0.95 * double(d.size()))) - 1;
-    std::nth_element(d.begin(), d.begin() + std::ptrdiff_t(k), d.end());
-    if (d[k] > 0) return d[k];
-  }
-  return f.size() ? radius_sum / double(f.size()) : 1.0;
 }
 
 Colouring colour_disks(const Frame& f, ColourBy by, const std::vector<bool>& marked, double max_displacement) {

@@ -10,17 +10,19 @@
 //                 Its top is the 95th percentile of the unmarked disks' displacements: a few far-flung
 //                 ejecta would otherwise leave the whole bed pale; larger values take the top colour.
 // Marked disks (a projectile) get an outline when drawn; they keep their species or speed colour, and in
-// displacement colouring are blue, outside the map. The colours are plain data so tests and docs can name
-// them. Rejected: a continuous speed map (the course's gas figure has three classes, which read at a
-// glance), rainbow maps (not ordered in lightness) and a displacement scale up to the largest value.
+// displacement colouring are blue, outside the map. Which disks are marked, their speed classes and the
+// scale's top are the library's (ede/analysis.hpp, "Frames"), so the live view colours alike; the colours
+// are plain data so tests and docs can name them. Rejected: a continuous speed map (the course's gas
+// figure has three classes, which read at a glance), rainbow maps (not ordered in lightness) and a
+// displacement scale up to the largest value.
 #pragma once
 
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "ede/error.hpp"
-#include "log_states.hpp"
+#include "ede/analysis.hpp"
+#include "frames.hpp"
 #include "render.hpp"
 
 namespace ede::render {
@@ -32,9 +34,7 @@ struct Rgb {
 
 // The species palette (Okabe & Ito 2008), in species order; cycles after eight species.
 Rgb species_colour(std::size_t species);
-enum class SpeedClass { Slow, Medium, Fast };
 Rgb speed_colour(SpeedClass c);
-SpeedClass speed_class(double speed, double initial_mean_speed);
 // The displacement map at u in [0, 1] (clamped).
 Rgb displacement_colour(double u);
 // The fill of marked disks in displacement colouring.
@@ -57,15 +57,6 @@ struct Colouring {
   std::vector<LegendEntry> legend;
   std::optional<ColourBar> bar;
 };
-
-// The disks to mark: those of the named species (an unknown name is an error listing the known ones), or
-// by default those of every species with exactly one disk (unless every species has one disk: nothing
-// stands out then).
-Result<std::vector<bool>> marked_disks(const Frame& f, const std::vector<std::string>& species_names);
-
-// The default top of the displacement scale: the 95th percentile of the unmarked disks' displacements
-// (a projectile moves far more than the bed), or the mean radius if they have not moved.
-double displacement_scale(const Frame& f, const std::vector<bool>& marked);
 
 Colouring colour_disks(const Frame& f, ColourBy by, const std::vector<bool>& marked, double max_displacement);
 

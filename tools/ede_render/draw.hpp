@@ -18,7 +18,7 @@
 
 #include "colouring.hpp"
 #include "ede/error.hpp"
-#include "log_states.hpp"
+#include "frames.hpp"
 #include "render.hpp"
 
 namespace ede::render {

@@ -1,12 +1,13 @@
-// A movie: K frames at evenly spaced times from --from to --to, as PNG files or an MP4.
+// A movie: K frames at evenly spaced times from --from to --to (or one every DT), as PNG files or an MP4.
 //
-// One LogStates walks forward through the log (each seek continues from the previous frame), so K frames
-// cost one pass over the events between them. Frames are frame_00000.png, frame_00001.png, ... in the
+// One LogFrames walks forward through the log (each frame continues from the previous one), so K frames
+// cost one pass over the events between them; the frame times are the library's (evenly_spaced_times,
+// times_every: exact in the log's type, computed from their index). Frames are frame_00000.png, frame_00001.png, ... in the
 // output directory; for an .mp4 they go to a fresh temporary directory, ffmpeg encodes them, and the
 // directory is removed. Without ffmpeg on PATH the frames are kept in <name>_frames/ beside the requested
 // .mp4, with a warning saying so and how to encode them later; the exit status is still 0. The colour
-// scale of --color displacement is fixed for the whole movie (the largest displacement at the last frame,
-// found by a second LogStates that seeks there once) so colours mean the same in every frame.
+// scale of --color displacement is fixed for the whole movie (the scale of the last frame, read before the
+// others; going back to the first then costs one keyframe) so colours mean the same in every frame.
 // Rejected: a per-frame scale (colours would flicker as the crater grows) and seeking each frame from
 // its nearest keyframe (K times the decoding).
 #include <cstdio>
@@ -17,8 +18,10 @@
 #include "colouring.hpp"
 #include "draw.hpp"
 #include "ffmpeg.hpp"
-#include "log_states.hpp"
+#include "frames.hpp"
+#include "number_text.hpp"
 #include "render.hpp"
+#include "spawn.hpp"
 
 namespace ede::render {
 
@@ -27,17 +30,24 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string frame_name(int k) {
-  char b[32];
-  std::snprintf(b, sizeof b, "frame_%05d.png", k);
-  return b;
+  const std::string n = std::to_string(k);
+  return "frame_" + std::string(n.size() < 5 ? 5 - n.size() : 0, '0') + n + ".png";
 }
 
-// The displacement scale of the whole movie: as at its last frame.
-Result<double> movie_displacement_scale(const Options& opt, const TimePoint& last, const std::vector<bool>& marked) {
-  auto other = LogStates::open(opt.log);
-  if (!other) return other.error();
-  if (Status s = other.value()->seek(last); !s) return s.error();
-  return displacement_scale(other.value()->frame(), marked);
+constexpr std::size_t kMaxFrames = 1'000'000;
+
+// The frames' times: --frames K evenly spaced, or every DT; the last one is `end` if --to is and it lands there.
+Result<std::vector<tools::TimeOption>> frame_times(const Options& opt, const LogFrames& frames,
+                                                  const tools::TimeOption& from, const tools::TimeOption& to) {
+  const std::vector<Time> times = opt.frames ? evenly_spaced_times(from.t, to.t, std::size_t(*opt.frames), frames.scalar())
+                                             : times_every(from.t, to.t, *opt.every, frames.scalar(), kMaxFrames);
+  if (times.empty())
+    return Error{opt.every ? "--every " + tools::brief(*opt.every) + " gives more than " + std::to_string(kMaxFrames) +
+                                 " frames"
+                           : std::string("no frames")};
+  std::vector<tools::TimeOption> out;
+  for (const Time t : times) out.push_back({t, to.end && t == to.t});
+  return out;
 }
 
 Result<std::string> make_temporary_directory() {
@@ -70,7 +80,7 @@ Result<Target> choose_target(const Options& opt) {
     if (Status s = make_directory(t.frames_dir); !s) return s.error();
     return t;
   }
-  if (auto ffmpeg = find_program("ffmpeg")) {
+  if (auto ffmpeg = tools::find_program("ffmpeg")) {
     auto dir = make_temporary_directory();
     if (!dir) return dir.error();
     return Target{dir.value(), true, true, *ffmpeg};
@@ -92,8 +102,7 @@ int finish(const Options& opt, const Target& target, int frames) {
     return 0;
   }
   if (!target.encode) {
-    char rate[32];
-    std::snprintf(rate, sizeof rate, "%g", opt.fps);
+    const std::string rate = tools::brief(opt.fps);
     warn("ffmpeg is not installed (not found on PATH), so no " + opt.output + " was made; the " + count +
          " are in " + target.frames_dir + "/. Install ffmpeg and run: ffmpeg -framerate " + rate + " -i " +
          target.frames_dir + "/frame_%05d.png -c:v libx264 -pix_fmt yuv420p -vf pad=ceil(iw/2)*2:ceil(ih/2)*2 " +
@@ -104,31 +113,33 @@ int finish(const Options& opt, const Target& target, int frames) {
     return fail(s.error().message + "\nthe frames are kept in " + target.frames_dir + "/");
   std::error_code ec;
   fs::remove_all(target.frames_dir, ec);
-  std::printf("wrote %s (%s at %g frames/s)\n", opt.output.c_str(), count.c_str(), opt.fps);
+  std::printf("wrote %s (%s at %s frames/s)\n", opt.output.c_str(), count.c_str(), tools::brief(opt.fps).c_str());
   return 0;
 }
 
 }  // namespace
 
 int render_movie(const Options& opt) {
-  const int frames = *opt.frames;
-  auto opened = LogStates::open(opt.log);
+  auto opened = LogFrames::open(opt.log, opt.species);
   if (!opened) return fail(opened.error().message);
-  LogStates& states = *opened.value();
-  auto from = states.parse_time(opt.from, "--from");
+  LogFrames& frames = opened.value();
+  auto from = frames.read_time(opt.from, "--from");
   if (!from) return fail(from.error().message);
-  auto to = states.parse_time(opt.to, "--to");
+  auto to = frames.read_time(opt.to, "--to");
   if (!to) return fail(to.error().message);
   if (from.value().t > to.value().t) return usage_error("--from " + opt.from + " is after --to " + opt.to);
+  auto times = frame_times(opt, frames, from.value(), to.value());
+  if (!times) return usage_error(times.error().message);
 
-  if (Status s = states.seek(from.value()); !s) return fail(s.error().message);
-  auto marked = marked_disks(states.frame(), opt.mark_species);
-  if (!marked) return fail(marked.error().message);
+  auto first = frames.at(times.value().front());
+  if (!first) return fail(first.error().message);
+  auto marked = marked_disks(first.value(), opt.mark_species);
+  if (!marked) return fail(opt.log + ": --mark-species: " + marked.error().message);
   double scale = opt.max_displacement.value_or(0);
   if (opt.colour == ColourBy::Displacement && !opt.max_displacement) {
-    auto found = movie_displacement_scale(opt, to.value(), marked.value());
-    if (!found) return fail(found.error().message);
-    scale = found.value();
+    auto last = frames.at(times.value().back());
+    if (!last) return fail(last.error().message);
+    scale = displacement_scale(last.value(), marked.value());
   }
 
   auto target = choose_target(opt);
@@ -138,15 +149,16 @@ int render_movie(const Options& opt) {
     if (target.value().temporary) fs::remove_all(target.value().frames_dir, ec);
     return fail(e.message);
   };
-  for (int k = 0; k < frames; ++k) {
-    const long double fraction = frames == 1 ? 0.0L : static_cast<long double>(k) / (frames - 1);
-    if (Status s = states.seek(states.between(from.value(), to.value(), fraction)); !s) return give_up(s.error());
+  const int count = int(times.value().size());
+  for (int k = 0; k < count; ++k) {
+    auto frame = frames.at(times.value()[std::size_t(k)]);
+    if (!frame) return give_up(frame.error());
     const std::string path = (fs::path(target.value().frames_dir) / frame_name(k)).string();
-    if (Status s = write_frame(path, ImageFormat::Png, states.frame(), opt, marked.value(), scale); !s)
+    if (Status s = write_frame(path, ImageFormat::Png, frame.value(), opt, marked.value(), scale); !s)
       return give_up(s.error());
   }
-  if (!target.value().temporary) warn_stale_frames(target.value().frames_dir, frames);
-  return finish(opt, target.value(), frames);
+  if (!target.value().temporary) warn_stale_frames(target.value().frames_dir, count);
+  return finish(opt, target.value(), count);
 }
 
 }  // namespace ede::render

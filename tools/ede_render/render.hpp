@@ -2,18 +2,19 @@
 // points (a still picture, a movie).
 //
 // main.cpp parses the command line into Options; still.cpp and movie.cpp turn a log into files through
-// log_states (the state at a time, as plain doubles), colouring (what colour each disk is, the legend) and
-// draw / annotate (cairo). Exit status: 0 success, 1 an input problem (unreadable log, time beyond its
+// frames (the state at a time as the library's DiskFrame, plain doubles), colouring (what colour each disk
+// is, the legend) and draw / annotate (cairo). Exit status: 0 success, 1 an input problem (unreadable log, time beyond its
 // end, unwritable output), 2 a command line that asks for something impossible, like ede-replay.
 // Rejected: one file doing it all (the placeholder's successor would have been ~800 lines mixing cairo,
 // replay and process handling).
 #pragma once
 
-#include "report_error.hpp"
 #include <cstdio>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "report_error.hpp"
 
 namespace ede::render {
 
@@ -24,7 +25,9 @@ struct Options {
   std::string log, output;
   std::string at;                        // a still: a time or "end"
   std::string from = "0", to = "end";    // a movie
-  std::optional<int> frames;             // given: a movie
+  std::optional<int> frames;             // a movie of this many frames, evenly spaced
+  std::optional<double> every;           // or a movie of frames from, from + every, ... up to to
+  std::string species;                   // only the disks of this species ("": all)
   ColourBy colour = ColourBy::Species;
   int width = 800;                       // pixels (SVG: points)
   std::vector<std::string> mark_species; // empty: every species with exactly one disk

@@ -1,31 +1,31 @@
 // A still picture: the state at --at T (or end) of a log, to one PNG or SVG file.
 //
-// Reads the log through LogStates (replay from the nearest keyframe), resolves the marked species, sets
+// Reads the log through LogFrames (replay from the nearest keyframe), resolves the marked species, sets
 // the displacement scale from this very state unless --max-displacement fixes it, and draws. Rejected:
 // drawing from ede-replay's CSV (an extra file and a second program for every picture).
 #include <cstdio>
 
 #include "colouring.hpp"
 #include "draw.hpp"
-#include "log_states.hpp"
+#include "frames.hpp"
 #include "render.hpp"
 
 namespace ede::render {
 
 int render_still(const Options& opt) {
   const auto format = format_of(opt.output);
-  auto opened = LogStates::open(opt.log);
-  if (!opened) return fail(opened.error().message);
-  LogStates& states = *opened.value();
-  auto at = states.parse_time(opt.at, "--at");
+  auto frames = LogFrames::open(opt.log, opt.species);
+  if (!frames) return fail(frames.error().message);
+  auto at = frames.value().read_time(opt.at, "--at");
   if (!at) return fail(at.error().message);
-  if (Status s = states.seek(at.value()); !s) return fail(s.error().message);
-  const Frame f = states.frame();
+  auto frame = frames.value().at(at.value());
+  if (!frame) return fail(frame.error().message);
+  const Frame& f = frame.value();
   auto marked = marked_disks(f, opt.mark_species);
-  if (!marked) return fail(marked.error().message);
+  if (!marked) return fail(opt.log + ": --mark-species: " + marked.error().message);
   const double scale = opt.max_displacement.value_or(displacement_scale(f, marked.value()));
   if (Status s = write_frame(opt.output, *format, f, opt, marked.value(), scale); !s) return fail(s.error().message);
-  std::printf("wrote %s (t = %s, %zu disks)\n", opt.output.c_str(), states.time_text(at.value().t).c_str(), f.size());
+  std::printf("wrote %s (t = %s, %zu disks)\n", opt.output.c_str(), frames.value().time_text(f.time).c_str(), f.size());
   return 0;
 }
 

@@ -1,19 +1,15 @@
 // ede-stats collisions: pair collisions per disk over time, the collision rate and mean free time, and the
 // GasLab speed classes (% slow, medium, fast against the initial mean speed) over time.
 //
-// Counts come from log_series (one walk over the events); the speed classes from snapshots at the same
-// times (for_each_snapshot, forward only). The rate in a row is that of the interval since the row before:
-// 2 (pairs(t_k) - pairs(t_k-1)) / (N (t_k - t_k-1)) collisions per disk per unit time, and the mean free
-// time is its inverse; the first row has neither. Wall collisions are counted apart and are not part of the
-// mean free time (the time between collisions with other disks, as kinetic theory defines it).
-// Rejected: a rate from a sliding window of events, whose width would be one more parameter to explain.
-#include <cmath>
+// Thin: collision_series (ede/analysis.hpp) gives the counts, the rate per interval, the mean free time
+// and the speed classes; this file prints a summary, writes the CSV (no rate in the first row: no interval
+// before it) and has plot_collisions.py draw it. Rejected: a CSV column for every count a log keeps
+// (cell crossings, wraps), which no figure of a gas needs.
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "analysis/log_series.hpp"
 #include "stats_cli.hpp"
 #include "stats_tool.hpp"
 
@@ -30,27 +26,23 @@ constexpr const char* kCollisionsCsvHeader =
     "time,pair_collisions,wall_collisions,collisions_per_particle,collision_rate,mean_free_time,slow_percent,"
     "medium_percent,fast_percent\n";
 
-std::string csv_of(const LogSeries& s, const std::vector<SpeedClasses>& classes) {
+std::string csv_of(const CollisionSeries& c) {
+  const LogSeries& s = c.series;
   std::string text = kCollisionsCsvHeader;
   for (std::size_t k = 0; k < s.time.size(); ++k) {
-    std::string rate, free_time;
-    if (k > 0 && s.time[k] > s.time[k - 1]) {
-      const double r = (s.collisions_per_particle(k) - s.collisions_per_particle(k - 1)) / (s.time[k] - s.time[k - 1]);
-      rate = exact(r);
-      free_time = r > 0 ? exact(1 / r) : "inf";
-    }
-    const SpeedClasses& c = classes[k];
+    const SpeedClasses& sc = c.classes[k];
     text += exact(s.time[k]) + "," + std::to_string(s.pair_collisions[k]) + "," + std::to_string(s.wall_collisions[k]) +
-            "," + exact(s.collisions_per_particle(k)) + "," + rate + "," + free_time + "," + exact(c.slow_percent) +
-            "," + exact(c.medium_percent) + "," + exact(c.fast_percent) + "\n";
+            "," + exact(s.collisions_per_particle(k)) + "," + exact_cell(c.rate[k]) + "," +
+            exact_cell(c.mean_free_time[k]) + "," + exact(sc.slow_percent) + "," + exact(sc.medium_percent) + "," +
+            exact(sc.fast_percent) + "\n";
   }
   return text;
 }
 
-void report(const std::string& path, const LogOverview& o, const LogSeries& s, const std::vector<SpeedClasses>& c,
-            double reference_speed) {
+void report(const std::string& path, const LogOverview& o, const CollisionSeries& c) {
+  const LogSeries& s = c.series;
   const std::size_t last = s.time.size() - 1;
-  const double t = s.time[last];
+  const double t = s.time[last], v = c.reference_speed;
   std::printf("log                     %s (%zu disks, t = 0 to %s)\n", path.c_str(), o.disks, brief(t).c_str());
   std::printf("pair collisions         %llu (%s per disk)\n", static_cast<unsigned long long>(s.pair_collisions[last]),
               brief(s.collisions_per_particle(last)).c_str());
@@ -59,39 +51,29 @@ void report(const std::string& path, const LogOverview& o, const LogSeries& s, c
     std::printf("collision rate          %s per disk per unit time (average over the run)\n",
                 brief(s.collisions_per_particle(last) / t).c_str());
   std::printf("mean free time          %s (N t / 2 pairs)\n", brief(o.mean_free_time()).c_str());
-  std::printf("speed classes           v_ref = %s (initial mean speed): slow < %s, fast > %s\n",
-              brief(reference_speed).c_str(), brief(0.5 * reference_speed).c_str(),
-              brief(1.5 * reference_speed).c_str());
+  std::printf("speed classes           v_ref = %s (initial mean speed): slow < %s, fast > %s\n", brief(v).c_str(),
+              brief(0.5 * v).c_str(), brief(1.5 * v).c_str());
   for (const std::size_t k : {std::size_t(0), last})
-    std::printf("  t = %-18s slow %5.1f%%  medium %5.1f%%  fast %5.1f%%\n", brief(s.time[k]).c_str(), c[k].slow_percent,
-                c[k].medium_percent, c[k].fast_percent);
+    std::printf("  t = %-18s slow %5s%%  medium %5s%%  fast %5s%%\n", brief(s.time[k]).c_str(),
+                tools::fixed(c.classes[k].slow_percent, 1).c_str(), tools::fixed(c.classes[k].medium_percent, 1).c_str(),
+                tools::fixed(c.classes[k].fast_percent, 1).c_str());
 }
 
 int run_collisions(const CollisionOptions& opt) {
   if (opt.every && !(*opt.every > 0)) return usage_error("collisions: --every must be > 0");
   auto opened = open_log_overview(opt.log);
   if (!opened) return fail(opened.error().message);
-  const std::shared_ptr<LogReader>& log = opened.value().log;
   const LogOverview& overview = opened.value().overview;
   const double end = overview.end_time;
   const double every = opt.every.value_or(end > 0 ? end / 100 : 1);
-  const std::vector<double> times = grid_to_end(end, every, 1'000'000);
+  const std::vector<double> times = time_grid_to(0, end, every, 1'000'000);
   if (times.empty()) return usage_error("collisions: --every " + brief(every) + " gives more than a million times");
-
-  auto series = log_series(log, times);
+  auto series = collision_series(opened.value().log, times);
   if (!series) return fail(series.error().message);
-  std::vector<SpeedClasses> classes;
-  double reference = 0;
-  Status s = for_each_snapshot(log, times, [&](const GasSnapshot& snap) {
-    if (classes.empty()) reference = mean_speed(snap);
-    classes.push_back(speed_classes(snap, reference));
-  });
-  if (!s) return fail(s.error().message);
-  report(log->path(), overview, series.value(), classes, reference);
-
+  report(opt.log, overview, series.value());
   return write_csv_and_plot({.output = opt.output,
                              .plot = opt.plot,
-                             .csv = csv_of(series.value(), classes),
+                             .csv = csv_of(series.value()),
                              .script = "plot_collisions.py",
                              .args = {opt.plot},
                              .figure_label = "figure                  "});

@@ -1,6 +1,10 @@
 // ede-stats: statistics and figures from an event log (histograms, Maxwell-Boltzmann comparison,
 // per-species values, energy curves, collision statistics, pressure). Each subcommand writes CSV and, with
 // --plot FILE.png|svg, a figure drawn by matplotlib from that CSV (tools/plot).
+//
+// Thin: one file per subcommand, each registering itself and returning the function to run (the pattern
+// of ede-replay); the numbers come from ede/analysis.hpp and ede/pressure.hpp. Rejected: one binary per
+// analysis (ede-hist, ede-energy, ...), five names to learn for one kind of job.
 #include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
@@ -17,6 +21,7 @@ int main(int argc, char** argv) {
       {"energy", add_energy_command(app)},     {"collisions", add_collisions_command(app)},
       {"pressure", add_pressure_command(app)},
   };
+  ede::tools::add_version_flags(app, "ede-stats");
   if (const auto stop = ede::tools::parse_command_line(app, argc, argv)) return *stop;
   for (const auto& [name, run] : commands)
     if (app.got_subcommand(name)) return run();

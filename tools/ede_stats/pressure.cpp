@@ -1,8 +1,8 @@
 // ede-stats pressure: the pressure of a logged gas, on the walls and from the virial, with error bars.
 //
-//   ede-stats pressure LOG [--from T0] [--to T1] [--blocks B] [-o CSV] [--plot FILE.png|svg]
+//   ede-stats pressure LOG [--from T0] [--to T1|end] [--blocks B] [-o CSV] [--plot FILE.png|svg]
 //
-// Thin: libede's measure_pressure (pressure.hpp) replays the window once and does the physics and the
+// Thin: libede's measure_pressure (ede/pressure.hpp) replays the window once and does the physics and the
 // statistics; this file prints the summary (N, A, phi, kT, P_wall per wall and mean, P_virial, each with
 // its standard error, their ratio Z to the ideal gas, Henderson's equation of state), writes one CSV row
 // per block, and has tools/plot/plot_pressure.py draw the blocks from that CSV (the tail every ede-stats
@@ -19,9 +19,6 @@
 #include <string>
 #include <vector>
 
-#include "log/log_reader.hpp"
-#include "open_log.hpp"
-#include "analysis/pressure.hpp"
 #include "stats_cli.hpp"
 #include "stats_tool.hpp"
 
@@ -30,24 +27,15 @@ namespace ede::stats_tool {
 namespace {
 
 struct PressureCliOptions {
-  std::string log, csv, plot;
-  std::optional<double> from, to;
+  std::string log, csv, plot, from, to;
   std::size_t blocks = 20, bins = 64;
   double equilibration = 20;
 };
 
-// For the summary: 6 digits unless told otherwise; NaN (no value) as "n/a".
-std::string num(double v, const char* format = "%.6g") {
-  if (std::isnan(v)) return "n/a";
-  char b[48];
-  std::snprintf(b, sizeof b, format, v);
-  return b;
-}
+// For the summary: 6 significant digits unless told otherwise; NaN (no value) as "n/a".
+std::string num(double v, int digits = 6) { return std::isnan(v) ? "n/a" : brief(v, digits); }
 
-// Exact digits for the CSV (a double reads back identical); NaN as an empty field.
-using tools::exact_cell;
-
-std::string pm(const BlockStats& s) { return num(s.mean) + " ± " + num(s.error, "%.2g"); }
+std::string pm(const BlockStats& s) { return num(s.mean) + " ± " + num(s.error, 2); }
 
 void line(const char* label, const std::string& text) { std::printf("%-12s%s\n", label, text.c_str()); }
 
@@ -72,7 +60,8 @@ std::string z_text(const PressureSeries& z) { return "Z = P A / (N kT) = " + pm(
 
 std::string check_text(const PressureSeries& s) {
   const BlockingAnalysis& b = s.blocking;
-  std::string t = "lag-1 correlation " + num(s.stats.lag1, "%.2f") + ", blocking error " + num(b.error, "%.2g");
+  const std::string lag1 = std::isnan(s.stats.lag1) ? "n/a" : tools::fixed(s.stats.lag1, 2);
+  std::string t = "lag-1 correlation " + lag1 + ", blocking error " + num(b.error, 2);
   switch (b.trend) {
     case BlockingTrend::Plateau: t += " (plateau at " + std::to_string(b.levels[b.plateau].blocks) + " blocks)"; break;
     case BlockingTrend::Rising: t += " (no plateau: still rising)"; break;
@@ -137,7 +126,7 @@ std::vector<std::string> figure_args(const PressureReport& r, const std::string&
                                    exact_cell(r.virial.stats.error),
                                    "--title",
                                    log + ": N = " + std::to_string(r.disks) + ", phi = " +
-                                       num(r.packing_fraction, "%.4g") + ", " + to_string(r.boundary)};
+                                       num(r.packing_fraction, 4) + ", " + to_string(r.boundary)};
   if (r.has_walls())
     args.insert(args.end(),
                 {"--wall", exact_cell(r.wall_mean.stats.mean), exact_cell(r.wall_mean.stats.error), "--walled"});
@@ -160,21 +149,35 @@ bool plot_extension_ok(const std::string& path) {
   return ends(".png") || ends(".svg");
 }
 
+// The window as typed: --from and --to exact in the log's scalar type; --to end is the default.
+Result<PressureOptions> window(const Log& log, const PressureCliOptions& opt) {
+  PressureOptions o;
+  o.blocks = opt.blocks, o.bins_per_block = opt.bins;
+  o.equilibration_mean_free_times = opt.equilibration;
+  if (!opt.from.empty()) {
+    auto from = tools::read_time(log, opt.from, "--from", false);
+    if (!from) return from.error();
+    o.from = double(from.value().t);
+  }
+  if (!opt.to.empty()) {
+    auto to = tools::read_time(log, opt.to, "--to");
+    if (!to) return to.error();
+    if (!to.value().end) o.to = double(to.value().t);
+  }
+  return o;
+}
+
 int run_pressure(const PressureCliOptions& opt) {
   if (opt.blocks < 2) return usage_error("--blocks must be at least 2 (an error needs several blocks)", "pressure");
   if (opt.bins < 1 || opt.blocks * opt.bins > 10'000'000)
     return usage_error("--bins must be at least 1, and blocks x bins at most 10^7", "pressure");
   if (!opt.plot.empty() && !plot_extension_ok(opt.plot))
     return usage_error("--plot wants a file name ending in .png or .svg, not '" + opt.plot + "'", "pressure");
-  auto log = ede::tools::open_log_warning("ede-stats", opt.log);
+  auto log = tools::open_log_warning("ede-stats", opt.log);
   if (!log) return fail(log.error().message);
-  if (!log.value()->complete())
-    warn(opt.log + " is incomplete (" + log.value()->incomplete_reason() + "); using what it holds");
-  PressureOptions o;
-  o.from = opt.from, o.to = opt.to;
-  o.blocks = opt.blocks, o.bins_per_block = opt.bins;
-  o.equilibration_mean_free_times = opt.equilibration;
-  auto report = measure_pressure(log.value(), o);
+  auto options = window(log.value(), opt);
+  if (!options) return fail(options.error().message);
+  auto report = measure_pressure(log.value(), options.value());
   if (!report) return fail(report.error().message);
   const PressureReport& r = report.value();
   print_system(r, opt.log);
@@ -198,7 +201,7 @@ Command add_pressure_command(CLI::App& app) {
   cmd->add_option("log", opt->log, "event log written by ede-sim -o")->required();
   cmd->add_option("--from", opt->from,
                   "window start (default: after --equilibration mean free times, at most half the run)");
-  cmd->add_option("--to", opt->to, "window end (default: the end of the log)");
+  cmd->add_option("--to", opt->to, "window end, or 'end' (the default)");
   cmd->add_option("--blocks,-b", opt->blocks, "blocks for the error estimate, at least 2 (default 20)");
   cmd->add_option("--bins", opt->bins,
                   "fine bins per block, for the blocking analysis (default 64; a power of 2 makes the "

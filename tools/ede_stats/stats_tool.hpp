@@ -1,6 +1,7 @@
 // What the ede-stats subcommands share. Each subcommand lives in its own file and registers itself with
 // add_*_command, which returns the function main calls once the command line is parsed (the pattern of
 // ede-replay). Every figure comes from a log: the subcommands replay it, they never re-run the physics.
+// Rejected: one options struct for all subcommands, whose fields would mean different things in each.
 #pragma once
 
 #include <CLI/CLI.hpp>

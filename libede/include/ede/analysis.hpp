@@ -1,6 +1,7 @@
 // Analysis of runs: distributions and the Maxwell-Boltzmann test, gas observables per species, block
-// averages, and series over time from a log (energy, collisions). Pressure and craters have headers of
-// their own (ede/pressure.hpp, ede/crater.hpp).
+// averages, series over time from a log (energy, collisions), the reports the analysis commands print
+// (distribution, species, energy with Haff's law, collisions), and frames for pictures. Pressure and
+// craters have headers of their own (ede/pressure.hpp, ede/crater.hpp).
 //
 // Two layers. Pure functions on plain numbers (histograms, KS tests, averages of a GasSnapshot) know
 // nothing of logs and are tested on hand-made samples. Functions of a Log walk or seek the log once and
@@ -10,6 +11,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -253,6 +255,9 @@ Result<LogOverview> log_overview(const Log& log);
 // t0, t0 + dt, t0 + 2 dt, ... (each computed as t0 + k dt, so no error accumulates), none above t1; empty
 // if t1 < t0, dt <= 0, or the grid would have more than max_points points.
 std::vector<double> time_grid(double t0, double t1, double dt, std::size_t max_points = 10'000'000);
+// The same grid with t1 itself appended when the grid stops short of it (both ends included); empty when
+// time_grid is.
+std::vector<double> time_grid_to(double t0, double t1, double dt, std::size_t max_points = 10'000'000);
 
 struct LogSeries {
   std::vector<double> time;
@@ -276,5 +281,149 @@ Result<LogSeries> log_series(const Log& log, const std::vector<double>& times);
 // time; the snapshot passed to f is reused between calls.
 Status for_each_snapshot(const Log& log, const std::vector<double>& times,
                          const std::function<void(const GasSnapshot&)>& f);
+
+// ==== Reports from a log =========================================================================
+// What the analysis commands report, one call each, returning plain structs: the tools print them, and
+// the Python module and the live view read the same fields. Each walks or seeks the log through the
+// functions above. Times are doubles within the log, as for log_series; a species is an index into the
+// log's species names (species_index), or kAllSpecies.
+// Rejected: leaving these compositions in the tools, where every front end would write them again and no
+// test could reach them without running a program.
+
+// The index of the species called `name`; "" means every disk (kAllSpecies). The error lists the species.
+Result<std::int32_t> species_index(const LogInfo& info, const std::string& name);
+
+// The speeds or kinetic energies of the selected disks at the given times (pooled: each time adds its
+// disks again), against 2D Maxwell-Boltzmann at the temperature of the sample itself, kT = <m v^2 / 2>,
+// with the initial state (t = 0) in the same bins beside it. The KS test runs on kinetic energies
+// (exponential with mean kT for any mix of masses). The bins are `bins` equal bins from 0 to the largest
+// value of the sample or of the initial state (to 1 if both are 0). kT is fitted from the same sample,
+// which makes p somewhat too large; pooled times closer than a few mean free times see nearly the same
+// disks, and p is then approximate.
+struct DistributionRequest {
+  std::vector<double> times;       // one time, or several to pool (non-decreasing, within the log)
+  std::int32_t species = kAllSpecies;
+  Quantity quantity = Quantity::Speed;
+  std::size_t bins = 40;           // at least 1
+  std::size_t curve_points = 400;  // intervals of the law's curve for figures
+};
+
+struct DistributionReport {
+  std::size_t disks = 0;                         // selected disks at one time
+  std::size_t samples = 0;                       // values in the histogram: disks x times
+  double kT = 0;                                 // of the sample
+  KsResult ks;                                   // the sample's energies against exp(-E/kT) / kT
+  double initial_kT = 0;                         // of the selected disks at t = 0 (0: at rest, no test)
+  KsResult initial_ks;                           // against the law at initial_kT
+  MaxwellBoltzmann law;                          // at kT, for the selection's masses
+  Histogram histogram, initial;                  // the same bins
+  std::vector<double> density, initial_density;  // densities() of the two
+  std::vector<double> law_density;               // law.bin_density per bin: what each bin should show
+  std::vector<double> curve_x, curve_density;    // the law at curve_points + 1 points from 0 to the last edge
+};
+
+// Fails if a time is outside the log, bins is 0, or the selected disks are at rest (kT = 0).
+Result<DistributionReport> measure_distribution(const Log& log, const DistributionRequest& request);
+
+// species_stats at each time (one snapshot each): every species, then "all"; or one species alone.
+struct SpeciesTable {
+  double time = 0;
+  std::vector<SpeciesStats> rows;
+};
+Result<std::vector<SpeciesTable>> species_tables(const Log& log, const std::vector<double>& times,
+                                                 std::int32_t species = kAllSpecies);
+
+// The kinetic energy (total and per species) on a grid, with Haff's law for an inelastic run.
+//
+// The grid runs from `from` to `to` (default: the whole log), both included: every `every` (default 1/20
+// of the whole run's mean free time, N t_end / 2 pairs, or 1/1000 of the range without collisions), or at
+// `points` evenly spaced times. E(0) is always the energy at t = 0, whatever the range.
+// Haff's law for a homogeneous cooling gas of equal disks (2D): each collision loses on average
+// (1 - xi^2) kT (the collision-weighted mean of (g.n)^2 is 4 kT / m for Maxwell-Boltzmann velocities), so
+// dT/dt = -(1 - xi^2) omega T / 2 with the collision frequency omega proportional to sqrt(T):
+//   E(t) / E(0) = (1 + t / tau)^-2,  tau = 4 / ((1 - xi^2) omega0),
+// and the collisions per disk grow as C(t) = omega0 tau ln(1 + t / tau). The first grid time t1 > 0 at
+// which the log reaches C1 = 2 collisions per disk (about 2N collisions: a 2% statistical error; the last
+// grid time if it never does) gives omega0 exactly within the model, with no fitted curve:
+//   omega0 = 4 (exp((1 - xi^2) C1 / 4) - 1) / ((1 - xi^2) t1).
+struct EnergyCurveRequest {
+  std::optional<double> from, to;     // the range (default: 0 and the end of the log)
+  std::optional<double> every;        // the spacing (> 0)
+  std::optional<std::size_t> points;  // instead of every: this many points (2 at least; fewer count as 2)
+  std::size_t max_points = 5'000'000;
+};
+
+struct EnergyCurve {
+  LogSeries series;                                         // on the grid
+  double restitution = std::numeric_limits<double>::quiet_NaN();  // xi of the log's scene; NaN if unreadable
+  double spacing = 0;                                       // the grid's spacing (0 with points)
+  bool default_spacing = false;                             // chosen by the rule above
+  double mean_free_time = 0;                                // of the whole run
+  double initial_energy = 0;                                // E(0)
+  double haff_tau = std::numeric_limits<double>::quiet_NaN();  // Haff's cooling time; NaN if elastic
+  double haff_calibration = 0;                              // C1: the collisions per disk omega0 came from
+
+  double ratio(std::size_t k) const;       // E(t_k) / E(0); NaN if E(0) = 0
+  double haff_ratio(std::size_t k) const;  // (1 + t_k / tau)^-2; NaN without tau
+  double max_drift() const;                // max over the grid of |E / E(0) - 1| (0 if E(0) = 0)
+};
+
+// Fails on a range outside the log, a spacing <= 0, or a grid of more than max_points points.
+Result<EnergyCurve> energy_curve(const Log& log, const EnergyCurveRequest& request = {});
+
+// Collisions over time: the counts of log_series; per interval since the time before, the pair collision
+// rate per disk, 2 (pairs(t_k) - pairs(t_k-1)) / (N (t_k - t_k-1)), and the mean free time 1 / rate
+// (infinity for a rate of 0), both NaN at the first time and after an empty interval; and the speed
+// classes at each time against the mean speed at the first time (the initial one when the times start at
+// 0). Wall collisions are counted apart and take no part in the rate (kinetic theory's mean free time is
+// the time between collisions with other disks).
+struct CollisionSeries {
+  LogSeries series;
+  double reference_speed = 0;
+  std::vector<SpeedClasses> classes;
+  std::vector<double> rate, mean_free_time;
+};
+Result<CollisionSeries> collision_series(const Log& log, const std::vector<double>& times);
+
+// ==== Frames: the disks as a picture shows them ==================================================
+// What a picture or a live view of one state needs, in double: positions (wrapped into a periodic box),
+// radii, speeds, the displacement from an initial state, the species; and what stands out: the GasLab
+// speed classes against the initial mean speed, the marked disks (a projectile), the top of a displacement
+// colour scale. The colours are the front end's. Rejected: a frame per scalar type (the drawing code
+// would exist three times) and the front ends computing these from a State each in their own way.
+
+struct DiskFrame {
+  Time time = 0;
+  double lx = 1, ly = 1;
+  bool periodic = false;
+  std::vector<std::string> species_names;  // the log's, all of them
+  std::vector<double> x, y, r, speed;
+  std::vector<double> displacement;        // from the initial state (periodic: the nearest image's)
+  std::vector<std::int32_t> species;
+  double initial_mean_speed = 0;           // the mean speed of these disks in the initial state
+
+  std::size_t size() const { return x.size(); }
+};
+
+// The disks of `state` (one species, or all) with their displacements from `initial`, the same run at an
+// earlier time (usually its start).
+DiskFrame disk_frame(const State& state, const State& initial, std::int32_t species = kAllSpecies);
+
+enum class SpeedClass { Slow, Medium, Fast };
+// Slow below 0.5 v_ref, fast above 1.5 v_ref, medium in between (as speed_classes counts).
+SpeedClass speed_class(double speed, double reference_speed);
+
+// The disks of the named species; with no names, those of every species that has exactly one disk in the
+// frame (a projectile), unless every species has one disk. Fails naming the species for an unknown name.
+Result<std::vector<bool>> marked_disks(const DiskFrame& frame, const std::vector<std::string>& species_names);
+// The top of a displacement colour scale: the 95th percentile of the unmarked disks' displacements (a
+// projectile and a few ejecta would leave the rest pale), or the mean radius if they have not moved.
+double displacement_scale(const DiskFrame& frame, const std::vector<bool>& marked);
+
+// Times from t0 to t1 for frames, each a value of the scalar type within [t0, t1] (t0 and t1 are): `count`
+// evenly spaced, both ends included (one: t0); or t0 + k every (each computed from k, not accumulated) up
+// to t1. Empty if t1 < t0, count is 0, every <= 0, or there would be more than max_count.
+std::vector<Time> evenly_spaced_times(Time t0, Time t1, std::size_t count, ScalarKind scalar);
+std::vector<Time> times_every(Time t0, Time t1, Time every, ScalarKind scalar, std::size_t max_count);
 
 }  // namespace ede

@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -194,5 +195,43 @@ struct CraterMeasurement {
 Result<CraterMeasurement> measure_crater(const Log& log, const CraterRequest& request = {});
 
 const char* to_string(CraterTimeSource);
+
+// ---- scans: many runs measured alike ----------------------------------------------------------------
+// A scan runs a scene for several values of one parameter and several seeds, and measures every log the
+// same way; these turn the measurements into the scan's table. Rejected: leaving the averages to each
+// front end, whose tables would then disagree in their last digits.
+
+// The metrics of a measurement as numbers, in the order of a scan's CSV columns: count (displaced disks),
+// depth, width, area, depth_below_mean, deepest_x, removed_area, raised_area, detached (after the impact).
+const std::vector<std::string>& crater_metric_names();
+std::vector<double> crater_metric_values(const CraterMeasurement& m);
+
+// The mean of n values and its standard error, s / sqrt(n) with s the sample standard deviation (n - 1);
+// the error is NaN for n < 2.
+struct MeanAndError {
+  std::size_t n = 0;
+  double mean = 0;
+  double error = std::numeric_limits<double>::quiet_NaN();
+};
+MeanAndError mean_and_error(const std::vector<double>& values);
+
+// The runs of one value of a scan.
+struct CraterScanGroup {
+  std::size_t runs = 0;
+  std::vector<MeanAndError> metrics;   // one per crater_metric_names(), over the runs
+  std::size_t at_log_end = 0;          // runs measured at their log's end (CraterTimeSource::LogEnd)
+  std::size_t requested = 0;           // runs measured at a time asked for
+  double first_time = std::numeric_limits<double>::infinity();   // the earliest measuring time
+  double last_time = -std::numeric_limits<double>::infinity();   // the latest
+};
+
+// groups[v] summarises the runs k with value_of_run[k] == v, for v < values (runs and value_of_run have
+// one entry per run).
+std::vector<CraterScanGroup> group_crater_scan(const std::vector<CraterMeasurement>& runs,
+                                               const std::vector<std::size_t>& value_of_run, std::size_t values);
+
+// Where a scan value (a TOML value, as typed) sits on a plot's axis: a number is itself, an array of
+// numbers its Euclidean length (a velocity vector gives the speed); NaN for anything else.
+double scan_axis_position(const std::string& value);
 
 }  // namespace ede

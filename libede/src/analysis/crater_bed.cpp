@@ -53,7 +53,7 @@ Result<BedSelection> select_bed(const LogHeaderInfo& h, const std::string& name)
     if (chosen[k]) b.species.push_back(names[k]), b.disks += counts[k];
   if (b.disks == 0)
     return Error{"no bed: no species is named 'bed' and none has more than one disk (the log has " +
-                 species_list(names, counts) + "); name one with --bed-species"};
+                 species_list(names, counts) + "); name one with --species"};
   b.is_bed.resize(h.species.size());
   for (std::size_t i = 0; i < h.species.size(); ++i) b.is_bed[i] = h.species[i] < chosen.size() && chosen[h.species[i]];
   return b;

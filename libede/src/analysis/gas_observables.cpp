@@ -117,13 +117,11 @@ SpeedClasses speed_classes(const GasSnapshot& s, double reference_speed, std::in
   SpeedClasses c;
   for (std::size_t i = 0; i < s.size(); ++i) {
     if (!selected(s, i, species)) continue;
-    const double v = s.speed(i);
-    if (v < 0.5 * reference_speed)
-      ++c.slow;
-    else if (v > 1.5 * reference_speed)
-      ++c.fast;
-    else
-      ++c.medium;
+    switch (speed_class(s.speed(i), reference_speed)) {
+      case SpeedClass::Slow: ++c.slow; break;
+      case SpeedClass::Medium: ++c.medium; break;
+      case SpeedClass::Fast: ++c.fast; break;
+    }
   }
   const double n = double(c.slow + c.medium + c.fast);
   if (n > 0) {

@@ -227,6 +227,12 @@ std::vector<double> time_grid(double t0, double t1, double dt, std::size_t max_p
   return out;
 }
 
+std::vector<double> time_grid_to(double t0, double t1, double dt, std::size_t max_points) {
+  std::vector<double> out = time_grid(t0, t1, dt, max_points);
+  if (!out.empty() && out.back() < t1) out.push_back(t1);
+  return out;
+}
+
 std::uint64_t LogSeries::disks() const {
   std::uint64_t n = 0;
   for (const std::uint64_t c : species_count) n += c;

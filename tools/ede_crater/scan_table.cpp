@@ -1,0 +1,85 @@
+// The results of a scan: the per-run and per-value CSV files and the table on stdout (see scan.hpp).
+//
+// The numbers are the library's (crater_metric_values, group_crater_scan, scan_axis_position); this file
+// lays them out. The per-value table shows one metric, with when its runs were measured, so a scan that
+// mixes the energy criterion with the log's end says so. Rejected: printing every metric in the table
+// (nine columns of means and errors do not read; the CSV has them).
+#include <cmath>
+
+#include "scan.hpp"
+
+namespace ede::crater_tool {
+
+namespace {
+
+using tools::exact_cell;
+
+std::string axis_cell(const std::string& value) { return exact_cell(scan_axis_position(value)); }
+
+std::vector<std::size_t> value_of_runs(const ScanResults& r) {
+  std::vector<std::size_t> v;
+  for (const ScanRun& run : r.runs) v.push_back(run.value);
+  return v;
+}
+
+std::vector<CraterMeasurement> measurements(const ScanResults& r) {
+  std::vector<CraterMeasurement> m;
+  for (const MeasuredLog& ml : r.measured) m.push_back(ml.crater);
+  return m;
+}
+
+std::vector<CraterScanGroup> groups_of(const ScanResults& r) {
+  return group_crater_scan(measurements(r), value_of_runs(r), r.values.size());
+}
+
+// "t = a" or "t = a-b": the times the runs of one value were measured at.
+std::string time_range(double lo, double hi) { return "t = " + brief(lo) + (lo == hi ? "" : "-" + brief(hi)); }
+
+}  // namespace
+
+Status write_scan_csv(const ScanResults& r, const std::string& per_run, const std::string& aggregate) {
+  const std::vector<std::string>& names = crater_metric_names();
+  std::string s = "value,x,seed,log,run_status,time,time_source,energy_fraction";
+  for (const std::string& m : names) s += "," + m;
+  s += "\n";
+  for (std::size_t k = 0; k < r.runs.size(); ++k) {
+    const ScanRun& run = r.runs[k];
+    const CraterMeasurement& c = r.measured[k].crater;
+    s += csv_field(r.values[run.value]) + "," + axis_cell(r.values[run.value]) + "," + std::to_string(run.seed) + "," +
+         csv_field(run.name + ".ede") + "," + csv_field(r.measured[k].run_status) + "," + exact(c.time) + "," +
+         to_string(c.source) + "," + exact(c.energy_fraction);
+    for (const double v : crater_metric_values(c)) s += "," + exact(v);
+    s += "\n";
+  }
+  if (Status w = write_text_file(per_run, s); !w) return w;
+
+  std::string a = "value,x,n";
+  for (const std::string& m : names) a += "," + m + "_mean," + m + "_stderr";
+  a += "\n";
+  const std::vector<CraterScanGroup> groups = groups_of(r);
+  for (std::size_t v = 0; v < r.values.size(); ++v) {
+    a += csv_field(r.values[v]) + "," + axis_cell(r.values[v]) + "," + std::to_string(groups[v].runs);
+    for (const MeanAndError& m : groups[v].metrics) a += "," + exact(m.mean) + "," + exact_cell(m.error);
+    a += "\n";
+  }
+  return write_text_file(aggregate, a);
+}
+
+void print_scan_table(const ScanResults& r, const std::string& param, std::size_t metric) {
+  std::printf("%-24s %4s  %s (mean +- standard error)   measured at\n", param.c_str(), "n",
+              crater_metric_names()[metric].c_str());
+  const std::vector<CraterScanGroup> groups = groups_of(r);
+  for (std::size_t v = 0; v < r.values.size(); ++v) {
+    const CraterScanGroup& g = groups[v];
+    const MeanAndError& m = g.metrics[metric];
+    const std::string when = g.requested    ? "the time asked for"
+                             : g.at_log_end == 0 ? "energy fraction reached"
+                                                 : std::to_string(g.at_log_end) + " of " + std::to_string(g.runs) +
+                                                       " at the log's end";
+    std::printf("%-24s %4zu  %-12s +- %-12s  %s, %s\n", r.values[v].c_str(), m.n, brief(m.mean).c_str(),
+                std::isnan(m.error) ? "-" : brief(m.error).c_str(), when.c_str(),
+                time_range(g.first_time, g.last_time).c_str());
+  }
+}
+
+}  // namespace ede::crater_tool

@@ -1,0 +1,24 @@
+// LogFrames; see frames.hpp.
+#include "frames.hpp"
+
+#include "open_log.hpp"
+
+namespace ede::render {
+
+Result<LogFrames> LogFrames::open(const std::string& path, const std::string& species) {
+  auto log = tools::open_log_warning("ede-render", path);
+  if (!log) return log.error();
+  auto index = species_index(log.value().info(), species);
+  if (!index) return Error{path + ": --species: " + index.error().message};
+  auto initial = log.value().state_at_event(0);
+  if (!initial) return initial.error();
+  return LogFrames(std::move(log).value(), std::move(initial).value(), index.value());
+}
+
+Result<Frame> LogFrames::at(const tools::TimeOption& t) {
+  auto state = t.end ? log_.state_at_end() : log_.state_at(t.t);
+  if (!state) return state.error();
+  return disk_frame(state.value(), initial_, species_);
+}
+
+}  // namespace ede::render
