@@ -262,7 +262,7 @@ TEST_CASE("ede-render makes movies: PNG frames, MP4 with ffmpeg", "[tool][ede-re
   CHECK(fs::file_size(mp4) > 0);
 }
 
-TEST_CASE("ede-render --every: frames at from, from + DT, ... up to --to; --to end is the log's end",
+TEST_CASE("ede-render --every: frames at from, from + DT, ... up to --to, and --to end is the log's end",
           "[tool][ede-render]") {
   const std::string log = make_log("every", kTinyScene);
   const std::string dir = temp_path("render-every");
