@@ -3,10 +3,12 @@
 # Run as root (or with sudo). Used by the README's two commands and by CI.
 set -eu
 
+# libxxhash-dev: content digests; zlib1g-dev: the log's CRC-32; nlohmann-json3-dev: the JSON summary;
 # python3-matplotlib: the figures (tools/plot); libcairo2-dev: ede-render; libclang-rt-14-dev: sanitizers and
 # libFuzzer for Clang (CI). ffmpeg is optional (movies).
-PACKAGES="build-essential cmake clang pkg-config libeigen3-dev capnproto libcapnp-dev libzstd-dev libcli11-dev \
-catch2 libtomlplusplus-dev python3-matplotlib libcairo2-dev libclang-rt-14-dev"
+PACKAGES="build-essential cmake clang pkg-config capnproto libcapnp-dev libzstd-dev libcli11-dev \
+catch2 libtomlplusplus-dev libxxhash-dev zlib1g-dev nlohmann-json3-dev python3-matplotlib libcairo2-dev \
+libclang-rt-14-dev"
 
 missing=""
 for p in $PACKAGES; do

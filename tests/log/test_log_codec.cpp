@@ -1,28 +1,39 @@
-// The log's building blocks: framing, CRC, byte columns, scalar bytes and ordered keys, SHA-256.
+// The log's building blocks: framing, CRC, byte columns, scalar bytes and ordered keys, the content hash.
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <string>
 
 #include "log/byte_columns.hpp"
 #include "core/crc32.hpp"
 #include "log/log_framing.hpp"
 #include "log/scalar_bytes.hpp"
-#include "core/sha256.hpp"
+#include "core/xxh3.hpp"
 
 using namespace ede;
 
-TEST_CASE("crc32 and sha256 match their reference vectors", "[log][codec]") {
-  CHECK(crc32("123456789", 9) == 0xCBF43926u);  // the standard check value
-  Sha256 empty;
-  CHECK(Sha256::hex(empty.finish()) == "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
-  Sha256 abc;
-  abc.update("abc", 3);
-  CHECK(Sha256::hex(abc.finish()) == "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
-  Sha256 long_input;  // 56 bytes: padding spills into a second block
-  const char* m = "abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq";
-  long_input.update(m, std::strlen(m));
-  CHECK(Sha256::hex(long_input.finish()) == "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
+TEST_CASE("crc32 matches the standard check value", "[log][codec]") {
+  CHECK(crc32("123456789", 9) == 0xCBF43926u);  // CRC-32/ISO-HDLC (zlib, PNG)
+  CHECK(crc32("", 0) == 0u);
+}
+
+TEST_CASE("the XXH3-128 content hash matches xxHash's reference vectors, however the input is split",
+          "[log][codec]") {
+  CHECK(Xxh3Hash().hex() == "99aa06d3014798d86001c324468d497f");  // empty input
+  Xxh3Hash abc;
+  abc.update("a", 1);
+  abc.update("bc", 2);
+  CHECK(abc.hex() == "06b05ab6733a618578af5f94892f3950");
+  std::string long_input;  // several of XXH3's 1024-byte blocks, cut at uneven places
+  for (int k = 0; k < 5000; ++k) long_input += char('a' + (k * 7919) % 26);
+  Xxh3Hash whole, pieces;
+  whole.update(long_input.data(), long_input.size());
+  for (std::size_t at = 0, step = 1; at < long_input.size(); at += step, step = step * 3 % 1021 + 1)
+    pieces.update(long_input.data() + at, std::min(step, long_input.size() - at));
+  CHECK(pieces.hex() == whole.hex());
+  CHECK(whole.hex().size() == 32);
 }
 
 TEST_CASE("record headers and trailers round-trip and refuse damage", "[log][codec]") {

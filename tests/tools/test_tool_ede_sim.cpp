@@ -3,31 +3,60 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <vector>
 
+#include <signal.h>
+
+#include <chrono>
+#include <thread>
+
+#include "ede/ede.hpp"
 #include "tool_runner.hpp"
 
 using namespace ede::test;
 
 namespace {
-// The number after "key": in a flat JSON object (our summary's keys are unique identifiers).
-double json_number(const std::string& json, const std::string& key) {
-  const auto at = json.find("\"" + key + "\": ");
-  REQUIRE(at != std::string::npos);
-  return std::strtod(json.c_str() + at + key.size() + 4, nullptr);
+// ede-sim's --json output read by a JSON parser (nlohmann-json, keys kept in order): one object, one line.
+nlohmann::ordered_json summary_json(const std::string& out) {
+  REQUIRE(!out.empty());
+  CHECK(out.find('\n') == out.size() - 1);
+  auto j = nlohmann::ordered_json::parse(out, nullptr, false);
+  REQUIRE(!j.is_discarded());
+  REQUIRE(j.is_object());
+  return j;
+}
+
+double json_number(const std::string& out, const std::string& key) {
+  const auto j = summary_json(out);
+  REQUIRE(j.contains(key));
+  REQUIRE(j[key].is_number());
+  return j[key].get<double>();
 }
 }  // namespace
 
 TEST_CASE("ede-sim runs the default scene and reports the required JSON keys", "[tool][ede-sim]") {
   const ToolRun r = run_tool("ede-sim", source_path("examples/gas.toml") + " --json --quiet", "json");
   REQUIRE(r.status == 0);
-  for (const char* key : {"events", "events_per_second", "sim_time", "wall_seconds", "energy_initial",
-                          "energy_final", "collisions_per_particle", "peak_rss_bytes", "effects"})
-    CHECK(r.out.find(std::string("\"") + key + "\": ") != std::string::npos);
+  const auto j = summary_json(r.out);
+  // Every key, in the documented order (scripts may rely on it; ede/simulation.hpp: stable keys).
+  std::vector<std::string> keys;
+  for (const auto& [key, value] : j.items()) keys.push_back(key);
+  CHECK(keys == std::vector<std::string>{
+                    "scene", "seed", "disks", "scalar", "effects", "status", "stall_message", "events",
+                    "events_by_kind", "samples", "stale_predictions", "tc_elastic", "collisions",
+                    "collisions_per_particle", "sim_time", "wall_seconds", "setup_seconds", "events_before",
+                    "events_per_second", "collisions_per_second", "energy_initial", "energy_final",
+                    "momentum_initial", "momentum_final", "engine_bytes", "peak_rss_bytes"});
+  CHECK(j["events_by_kind"]["pair"] == 50000);  // stop.collisions_per_particle = 50 with 2000 disks
+  std::uint64_t by_kind = 0;
+  for (const auto& [kind, count] : j["events_by_kind"].items()) by_kind += count.get<std::uint64_t>();
+  CHECK(j["events"].get<std::uint64_t>() == by_kind);
+  CHECK(j["momentum_final"].size() == 2);
   CHECK(json_number(r.out, "collisions_per_particle") == Approx(50).margin(1e-9));
   const double e0 = json_number(r.out, "energy_initial"), e1 = json_number(r.out, "energy_final");
   CHECK(std::abs(e1 - e0) / e0 < 1e-12);  // elastic: energy conserved to round-off
-  CHECK(r.out.find("\"effects\": \"walls, elastic") != std::string::npos);
+  CHECK(j["effects"].get<std::string>().rfind("walls, elastic", 0) == 0);
 }
 
 TEST_CASE("ede-sim prints a readable summary", "[tool][ede-sim]") {
@@ -67,7 +96,7 @@ TEST_CASE("ede-sim --set overrides scene values (parameter scans)", "[tool][ede-
                              "set");
   REQUIRE(r.status == 0);
   CHECK(json_number(r.out, "disks") == 300);
-  CHECK(r.out.find("\"effects\": \"periodic") != std::string::npos);
+  CHECK(summary_json(r.out)["effects"].get<std::string>().rfind("periodic", 0) == 0);
 }
 
 TEST_CASE("ede-sim runs float and long double scenes", "[tool][ede-sim]") {
@@ -88,7 +117,7 @@ TEST_CASE("ede-sim runs float128 scenes without a log, and refuses to log them",
   const ToolRun r = run_tool("ede-sim", scene + " --json --final-state " + csv, "float128");
   INFO(r.err);
   REQUIRE(r.status == 0);
-  CHECK(r.out.find("\"scalar\": \"float128\"") != std::string::npos);
+  CHECK(summary_json(r.out)["scalar"] == "float128");
   CHECK(json_number(r.out, "collisions_per_particle") == Approx(50).margin(1e-6));
   const auto rows = lines(read_file(csv));
   REQUIRE(rows.size() > 1);
@@ -145,22 +174,35 @@ TEST_CASE("ede-sim rejects bad input with a clear message and a non-zero exit", 
 
 TEST_CASE("ede-sim on Ctrl-C: summary so far, what the log kept, how to resume, and the resume completes it exactly",
           "[tool][ede-sim][resume]") {
-  // 4000 disks for 2.5 M events (a few seconds): SIGINT arrives after its first resumable keyframes.
+  // 4000 disks for 6 M events (seconds): SIGINT arrives once the log holds a resumable keyframe.
   const std::string scene = temp_path("sigint.toml");
   std::ofstream(scene) << "seed = 2\n[box]\nsize = [1.0, 1.0]\nboundary = \"periodic\"\n[engine]\nrebuild_interval = "
                           "50000\n[[species]]\nname = \"gas\"\ncount = 4000\nradius = 0.004\n[species.velocity]\n"
-                          "kind = \"speed\"\nspeed = 1.0\n[stop]\nevents = 2500000\n";
+                          "kind = \"speed\"\nspeed = 1.0\n[stop]\nevents = 6000000\n";
   const std::string whole = temp_path("sigint-whole.ede"), cut = temp_path("sigint-cut.ede");
-  sim_log(scene, "", whole, "sigint-whole");
-  // In the background, then SIGINT after a second: the redirections belong to ede-sim itself.
   const std::string out = temp_path("sigint.out"), err = temp_path("sigint.err");
-  const int raw = std::system((tool_path("ede-sim") + " " + scene + " --json -o " + cut + " >" + out + " 2>" + err +
-                               " & pid=$!; sleep 1; kill -INT $pid; wait $pid")
-                                  .c_str());
+  sim_log(scene, "", whole, "sigint-whole");
+  std::remove(cut.c_str());
+  const pid_t pid = fork();
+  REQUIRE(pid >= 0);
+  if (pid == 0) {
+    std::freopen(out.c_str(), "w", stdout);
+    std::freopen(err.c_str(), "w", stderr);
+    execl(tool_path("ede-sim").c_str(), "ede-sim", scene.c_str(), "--json", "-o", cut.c_str(), (char*)nullptr);
+    _exit(127);
+  }
+  // The first resumable keyframe after the start is written once 50 000 events have run.
+  for (int k = 0; k < 4000; ++k) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    if (auto log = ede::Log::open(cut); log && log.value().info().resumable_keyframes > 1) break;
+  }
+  kill(pid, SIGINT);
+  int raw = 0;
+  waitpid(pid, &raw, 0);
   const ToolRun interrupted{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, read_file(out), read_file(err)};
   INFO(interrupted.err);
   REQUIRE(interrupted.status == 130);
-  CHECK(interrupted.out.find("\"status\": \"interrupted\"") != std::string::npos);
+  CHECK(interrupted.out.find("\"status\":\"interrupted\"") != std::string::npos);
   CHECK(interrupted.err.find("interrupted at t = ") != std::string::npos);
   CHECK(interrupted.err.find("ede-sim --resume " + cut) != std::string::npos);
   const ToolRun resumed = run_tool("ede-sim", "--resume " + cut + " -q", "sigint-resume");

@@ -12,7 +12,8 @@
 
 namespace ede::tools {
 
-// Runs `python3 EDE_PLOT_DIR/<script> <args...>`; the error carries the script's stderr.
+// Runs `python3 <plot dir>/<script> <args...>` (the installed scripts beside the program, else the source
+// tree's tools/plot); the error carries the script's stderr.
 Status run_plot_script(const std::string& script, const std::vector<std::string>& args);
 
 }  // namespace ede::tools

@@ -89,7 +89,7 @@ int run_info(const InfoOptions& opt) {
   print_records(log);
   if (opt.digest) {
     if (auto digest = log.content_digest())
-      line("content digest", "sha256 " + digest.value());
+      line("content digest", digest.value());
     else
       digest_problem = digest.error().message;
   }

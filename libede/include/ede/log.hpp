@@ -125,6 +125,7 @@ class Log {
   Result<DiffReport> diff(const Log& other, bool full = false) const;
   // A digest of what the log says (scene, every event, the final state), independent of how it is stored:
   // equal for logs of the same run whatever compiler or compression level wrote them. Replays the log.
+  // The text names the hash: "xxh3-128:" and 32 hex digits.
   Result<std::string> content_digest() const;
 
   struct Impl;

@@ -5,9 +5,9 @@
 #include "analysis/log_series.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <type_traits>
 
+#include "core/number_text.hpp"
 #include "log/log_stats.hpp"
 #include "replay/replay.hpp"
 
@@ -40,11 +40,7 @@ Result<std::unique_ptr<Replay<T>>> replay_of(const std::shared_ptr<const LogRead
   return Replay<T>::create(log);
 }
 
-std::string text(double v) {
-  char b[40];
-  std::snprintf(b, sizeof b, "%.17g", v);
-  return b;
-}
+std::string text(double v) { return exact_number(v); }
 
 template <class T>
 Status check_times(const LogReader& log, const std::vector<double>& times, T end) {

@@ -1,14 +1,13 @@
 // Column, exact_text and parse_exact (ede/state.hpp).
 //
 // Exact text uses the digits that round-trip each type (float 9, double 17, long double 21 significant
-// digits) through printf's %g, the format every CSV of ede has used, so old and new outputs compare equal.
-// Rejected: std::to_chars shortest form for doubles (shorter, but a CSV written before would no longer
-// compare byte for byte with one written now, and long double has no to_chars in libstdc++ 12).
+// digits) in %g form, the format every CSV of ede has used, so old and new outputs compare equal; it is
+// written by core/number_text.hpp (std::to_chars), like every number libede prints.
 #include <cerrno>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 
+#include "core/number_text.hpp"
 #include "ede/state.hpp"
 
 namespace ede {
@@ -52,14 +51,13 @@ template const std::vector<double>& Column::values<double>() const;
 template const std::vector<long double>& Column::values<long double>() const;
 
 std::string exact_text(long double value, ScalarKind scalar) {
-  char b[64];
   switch (scalar) {
-    case ScalarKind::Float: std::snprintf(b, sizeof b, "%.9g", double(float(value))); break;
+    case ScalarKind::Float: return exact_number(float(value));
     case ScalarKind::LongDouble:
-    case ScalarKind::Float128: std::snprintf(b, sizeof b, "%.21Lg", value); break;
-    case ScalarKind::Double: std::snprintf(b, sizeof b, "%.17g", double(value)); break;
+    case ScalarKind::Float128: return exact_number(value);
+    case ScalarKind::Double: break;
   }
-  return b;
+  return exact_number(double(value));
 }
 
 Result<Time> parse_exact(const std::string& text, ScalarKind scalar) {

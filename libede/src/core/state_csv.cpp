@@ -1,6 +1,7 @@
 // Exact CSV snapshots of a state; see state_csv.hpp.
 #include "core/state_csv.hpp"
 
+#include "core/number_text.hpp"
 #include "ede/state.hpp"
 
 #include <cerrno>
@@ -14,9 +15,11 @@ namespace ede {
 
 namespace {
 
-void put(std::FILE* out, float v) { std::fprintf(out, "%.9g", double(v)); }
-void put(std::FILE* out, double v) { std::fprintf(out, "%.17g", v); }
-void put(std::FILE* out, long double v) { std::fprintf(out, "%.21Lg", v); }
+template <class T>
+void put(std::FILE* out, T v) {
+  char text[kNumberTextSize];
+  std::fwrite(text, 1, std::size_t(put_general(text, v, kExactDigits<T>) - text), out);
+}
 #if EDE_HAVE_FLOAT128
 void put(std::FILE* out, __float128 v) {
   char text[64];

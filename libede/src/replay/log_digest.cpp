@@ -3,14 +3,14 @@
 
 #include "replay/replay.hpp"
 #include "log/scalar_bytes.hpp"
-#include "core/sha256.hpp"
+#include "core/xxh3.hpp"
 
 namespace ede {
 
 namespace {
 
 template <class T>
-void put_scalar(Sha256& h, T v) {
+void put_scalar(Xxh3Hash& h, T v) {
   unsigned char b[kScalarWidth<T>];
   scalar_to_bytes(v, b);
   h.update(b, sizeof b);
@@ -22,7 +22,7 @@ Result<std::string> digest_as(std::shared_ptr<const LogReader> log) {
   if (!made) return made.error();
   Replay<T>& replay = *made.value();
   const LogHeaderInfo& info = log->header();
-  Sha256 h;
+  Xxh3Hash h;
   h.update(info.scene_text.data(), info.scene_text.size());
   const unsigned char scalar = static_cast<unsigned char>(info.scalar);
   h.update(&scalar, 1);
@@ -41,7 +41,7 @@ Result<std::string> digest_as(std::shared_ptr<const LogReader> log) {
   if (!s) return s.error();
   for (const Disk<T>& d : replay.particles().disk)
     for (T v : {d.x, d.y, d.vx, d.vy, d.t}) put_scalar(h, v);
-  return Sha256::hex(h.finish());
+  return std::string(kDigestAlgorithm) + ":" + h.hex();
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <optional>
 
+#include "core/number_text.hpp"
 #include "log/chunk_codec.hpp"
 #include "ede_log.capnp.h"
 #include "log/log_messages.hpp"
@@ -101,17 +102,6 @@ Result<KeyframeData<T>> read_keyframe(const LogReader& log, const LogRecordRef& 
   }
   if (k.events_before != ref.first_event) return Error{where + ": its event count disagrees with its record header"};
   return k;
-}
-
-// The digits that read back to the same value of T.
-template <class T>
-std::string exact_text(T v) {
-  char b[48];
-  if constexpr (std::is_same_v<T, long double>)
-    std::snprintf(b, sizeof b, "%.21Lg", v);
-  else
-    std::snprintf(b, sizeof b, "%.*g", std::is_same_v<T, float> ? 9 : 17, double(v));
-  return b;
 }
 
 }  // namespace
@@ -303,7 +293,7 @@ Status Replay<T>::seek_time(T t) {
   if (!std::isfinite(double(t)) || t < T(0)) return Error{"the time must be finite and >= 0"};
   const T end = final_time();
   if (t > end)
-    return Error{log_->path() + ": t = " + exact_text(t) + " is after the end of the log (t = " + exact_text(end) +
+    return Error{log_->path() + ": t = " + exact_number(t) + " is after the end of the log (t = " + exact_number(end) +
                  (log_->complete() ? ")" : ", the last event of an incomplete log)")};
   // The last keyframe at or before t (the index's times are doubles: check the exact time after loading).
   const auto& kfs = log_->keyframes();

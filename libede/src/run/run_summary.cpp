@@ -1,11 +1,13 @@
-// Building and formatting RunSummary (ede/simulation.hpp, run/run_summary.hpp). JSON is written by hand:
-// keys are fixed identifiers, strings are escaped, non-finite numbers become null.
+// Building and formatting RunSummary (ede/simulation.hpp, run/run_summary.hpp). JSON is written with
+// nlohmann-json (an ordered_json keeps the keys in the order below, which scripts and people read): it
+// escapes strings, replaces bytes that are not UTF-8 (a file name may hold any), writes non-finite numbers
+// as null and doubles in the shortest form that reads back to the same double. Rejected: the JSON written
+// by hand here before (its own escaping and number rules to keep right).
 #include "run/run_summary.hpp"
 
 #include <sys/resource.h>
 
-#include <cmath>
-#include <cstdio>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "core/number_text.hpp"
@@ -13,30 +15,6 @@
 namespace ede {
 
 namespace {
-
-std::string number(double v) {
-  if (!std::isfinite(v)) return "null";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
-std::string quoted(const std::string& s) {
-  std::string out = "\"";
-  for (const unsigned char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += char(c);
-    } else if (c < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", c);
-      out += buf;
-    } else {
-      out += char(c);
-    }
-  }
-  return out + "\"";
-}
 
 template <class T>
 const char* scalar_name() {
@@ -118,26 +96,40 @@ std::string to_text(const RunSummary& s) {
 }
 
 std::string to_json(const RunSummary& s) {
-  std::ostringstream o;
+  using Json = nlohmann::ordered_json;
   const auto& c = s.counts;
-  o << "{\"scene\": " << quoted(s.scene) << ", \"seed\": " << s.seed << ", \"disks\": " << s.disks
-    << ", \"scalar\": " << quoted(s.scalar) << ", \"effects\": " << quoted(s.effects)
-    << ", \"status\": " << quoted(s.status) << ", \"stall_message\": " << quoted(s.stall_message)
-    << ", \"events\": " << c.events() << ", \"events_by_kind\": {\"pair\": " << c.of(EventKind::Pair)
-    << ", \"wall\": " << c.of(EventKind::Wall) << ", \"cell\": " << c.of(EventKind::Cell)
-    << ", \"wrap\": " << c.of(EventKind::Wrap) << ", \"action\": " << c.of(EventKind::Action) << "}"
-    << ", \"samples\": " << c.of(EventKind::Sample) << ", \"stale_predictions\": " << c.stale
-    << ", \"tc_elastic\": " << c.tc_elastic << ", \"collisions\": " << c.collisions()
-    << ", \"collisions_per_particle\": " << number(s.collisions_per_particle)
-    << ", \"sim_time\": " << number(s.sim_time) << ", \"wall_seconds\": " << number(s.wall_seconds)
-    << ", \"setup_seconds\": " << number(s.setup_seconds) << ", \"events_before\": " << s.events_before
-    << ", \"events_per_second\": " << number(s.events_per_second())
-    << ", \"collisions_per_second\": " << number(s.collisions_per_second())
-    << ", \"energy_initial\": " << number(s.energy_initial) << ", \"energy_final\": " << number(s.energy_final)
-    << ", \"momentum_initial\": [" << number(s.momentum_initial[0]) << ", " << number(s.momentum_initial[1]) << "]"
-    << ", \"momentum_final\": [" << number(s.momentum_final[0]) << ", " << number(s.momentum_final[1]) << "]"
-    << ", \"engine_bytes\": " << s.engine_bytes << ", \"peak_rss_bytes\": " << s.peak_rss_bytes << "}";
-  return o.str();
+  Json j;
+  j["scene"] = s.scene;
+  j["seed"] = s.seed;
+  j["disks"] = s.disks;
+  j["scalar"] = s.scalar;
+  j["effects"] = s.effects;
+  j["status"] = s.status;
+  j["stall_message"] = s.stall_message;
+  j["events"] = c.events();
+  j["events_by_kind"] = {{"pair", c.of(EventKind::Pair)},
+                         {"wall", c.of(EventKind::Wall)},
+                         {"cell", c.of(EventKind::Cell)},
+                         {"wrap", c.of(EventKind::Wrap)},
+                         {"action", c.of(EventKind::Action)}};
+  j["samples"] = c.of(EventKind::Sample);
+  j["stale_predictions"] = c.stale;
+  j["tc_elastic"] = c.tc_elastic;
+  j["collisions"] = c.collisions();
+  j["collisions_per_particle"] = s.collisions_per_particle;
+  j["sim_time"] = s.sim_time;
+  j["wall_seconds"] = s.wall_seconds;
+  j["setup_seconds"] = s.setup_seconds;
+  j["events_before"] = s.events_before;
+  j["events_per_second"] = s.events_per_second();
+  j["collisions_per_second"] = s.collisions_per_second();
+  j["energy_initial"] = s.energy_initial;
+  j["energy_final"] = s.energy_final;
+  j["momentum_initial"] = Json::array({s.momentum_initial[0], s.momentum_initial[1]});
+  j["momentum_final"] = Json::array({s.momentum_final[0], s.momentum_final[1]});
+  j["engine_bytes"] = s.engine_bytes;
+  j["peak_rss_bytes"] = s.peak_rss_bytes;
+  return j.dump(-1, ' ', false, Json::error_handler_t::replace);
 }
 
 }  // namespace ede

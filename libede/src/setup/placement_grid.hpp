@@ -15,9 +15,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <string>
 #include <vector>
+
+#include "core/number_text.hpp"
 
 namespace ede::setup_detail {
 
@@ -130,10 +131,6 @@ class PlacementGrid {
 };
 
 // A number for an error message: by default enough digits to find the value in a file.
-inline std::string number_text(double v, int significant_digits = 9) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%.*g", significant_digits, v);
-  return buf;
-}
+inline std::string number_text(double v, int significant_digits = 9) { return general_text(v, significant_digits); }
 
 }  // namespace ede::setup_detail
