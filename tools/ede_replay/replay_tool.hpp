@@ -11,7 +11,9 @@
 #include <string>
 
 #include "ede/ede.hpp"
+#include "open_log.hpp"
 #include "report_error.hpp"
+#include "time_option.hpp"
 
 namespace ede::replay_tool {
 
@@ -35,18 +37,10 @@ inline int usage_error(const std::string& message) {
   return 2;
 }
 
-// Opens a log; a log that is not complete (a killed run, or damage) gets a warning on stderr, so a user
-// never takes a partial log for a whole one.
-inline Result<Log> open_log(const std::string& path) {
-  auto log = Log::open(path);
-  if (log && !log.value().info().complete)
-    std::fprintf(stderr, "ede-replay: warning: %s is %s: %s\n", path.c_str(),
-                 log.value().info().damaged ? "DAMAGED (read up to the damage)" : "incomplete (the run did not finish)",
-                 log.value().info().incomplete_reason.c_str());
-  return log;
-}
+inline Result<Log> open_log(const std::string& path) { return tools::open_log_warning("ede-replay", path); }
 
-// A time given on the command line, read exactly in the log's scalar type: one finite number >= 0.
+// A time bounding a range (events --from/--to), read exactly in the log's scalar type: one finite number
+// >= 0, which may lie beyond the log (the range is then empty). --at goes through tools::read_time.
 inline Result<Time> parse_time(const Log& log, const std::string& text, const char* what) {
   auto v = parse_exact(text, log.info().scalar);
   if (!v) return Error{std::string(what) + " '" + text + "' is not a number (a time such as 0.5 or 1e-3)"};

@@ -20,14 +20,9 @@ struct StateOptions {
 
 Result<State> state_of(const Log& log, const StateOptions& opt) {
   if (opt.event) return log.state_at_event(*opt.event);
-  if (opt.at == "end") return log.state_at_end();
-  auto t = parse_time(log, opt.at, "--at");
+  auto t = tools::read_time(log, opt.at, "--at");
   if (!t) return t.error();
-  if (t.value() > log.info().end_time)
-    return Error{log.info().path + ": --at " + exact(log, t.value()) + " is after the end of the log (t = " +
-                 exact(log, log.info().end_time) + (log.info().complete ? "" : "; the log is incomplete") +
-                 "); --at end gives the last state"};
-  return log.state_at(t.value());
+  return t.value().end ? log.state_at_end() : log.state_at(t.value().t);
 }
 
 int run_state(const StateOptions& opt) {
