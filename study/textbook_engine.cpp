@@ -5,7 +5,7 @@
 // about how far round-off can be pushed, and the two roots differ by round-off alone.
 #include "study/study_engine.hpp"
 
-#include "engine/engine_factory.hpp"
+#include "engine/engine_checks.hpp"
 #include "study/textbook_contact.hpp"
 
 namespace ede::study {

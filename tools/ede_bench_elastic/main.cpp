@@ -13,7 +13,7 @@
 
 #include "command_line.hpp"
 #include "ede/scene.hpp"
-#include "engine/engine_factory.hpp"
+#include "engine/engine_checks.hpp"
 #include "report_error.hpp"
 #include "setup/setup.hpp"
 #include "study/timed_run.hpp"

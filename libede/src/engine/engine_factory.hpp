@@ -19,45 +19,19 @@
 // (check_engine_input refuses it).
 // Outside the library: study/textbook_engine.cpp builds the two elastic engines with the textbook
 // contact root for float, double and long double (the accuracy study, 6 more), and ede-bench-elastic
-// builds WallsElastic<double> alone (the effects study's "only the elastic path compiled in").
+// builds WallsElastic<double> alone (the effects study's "only the elastic path compiled in"). Such code
+// includes engine_core.hpp and engine_checks.hpp, not this header, and calls the library's make_engine
+// and make_engine_as through their declarations (engine.hpp): instantiating them from here would compile
+// the whole table again outside the library.
 #pragma once
 
-#include <cmath>
 #include <memory>
 #include <string>
 
+#include "engine/engine_checks.hpp"
 #include "engine/engine_core.hpp"
 
 namespace ede {
-
-Status check_engine_input(const InitialState& init, const EngineOptions& options, GridShape& shape);
-
-template <class T>
-Status check_resume_point(const InitialState& init, const EngineOptions& options, const ResumePoint<T>& r) {
-  if (r.disks.size() != init.size())
-    return Error{"the resume point holds " + std::to_string(r.disks.size()) + " disks, the scene " +
-                 std::to_string(init.size())};
-  if (uses_tc_model(options.physics) && r.last_collision.size() != init.size())
-    return Error{"the resume point lacks the TC model's collision times"};
-  for (const Disk<T>& d : r.disks) {
-    const bool finite = std::isfinite(double(d.x)) && std::isfinite(double(d.y)) && std::isfinite(double(d.vx)) &&
-                        std::isfinite(double(d.vy)) && std::isfinite(double(d.t));
-    if (!finite || d.last_partner < -1 || d.last_partner >= std::int32_t(init.size()))
-      return Error{"the resume point holds a non-finite number or an invalid partner id"};
-  }
-  return Ok{};
-}
-
-// Both checks; the grid shape for the engine.
-template <class T>
-Result<GridShape> check_engine_start(const InitialState& init, const EngineOptions& options,
-                                     const ResumePoint<T>* resume) {
-  GridShape shape;
-  if (Status s = check_engine_input(init, options, shape); !s) return s.error();
-  if (resume)
-    if (Status s = check_resume_point(init, options, *resume); !s) return s.error();
-  return shape;
-}
 
 template <class T>
 Result<std::unique_ptr<EngineApi<T>>> make_engine_as(EngineKind kind, const InitialState& init,
