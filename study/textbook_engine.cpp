@@ -5,6 +5,8 @@
 // about how far round-off can be pushed, and the two roots differ by round-off alone.
 #include "study/study_engine.hpp"
 
+#include <type_traits>
+
 #include "engine/engine_checks.hpp"
 #include "study/textbook_contact.hpp"
 

@@ -25,7 +25,7 @@ int run_accuracy(AccuracyOptions o) {
     o.plan = study::quick_plan(o.plan);
     o.plan.overrides.insert(o.plan.overrides.begin(), "stop.events=200000");  // a --set wins
   }
-  std::vector<std::string> scenes;
+  std::vector<std::string> scenes = {o.plan.scene("cooling")};  // the time-stepped part's second gas
   for (const std::string& name : study::engine_scenes()) scenes.push_back(o.plan.scene(name));
   if (!check_scenes(scenes, o.plan.overrides)) return 1;
   std::error_code ec;
