@@ -1,4 +1,5 @@
-// Pure geometry: contact times against hand-computed cases, and the stable root against the textbook one.
+// Pure geometry: contact times against hand-computed cases, and the stable root against the textbook one
+// (the accuracy study's, study/textbook_contact.hpp).
 #include <catch2/catch.hpp>
 #include <algorithm>
 #include <cmath>
@@ -6,6 +7,7 @@
 #include <vector>
 
 #include "core/geometry.hpp"
+#include "study/textbook_contact.hpp"
 
 using namespace ede;
 

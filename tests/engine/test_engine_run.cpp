@@ -191,49 +191,6 @@ TEST_CASE("the all-pairs baseline and the cell engine agree", "[run][baseline]")
   }
 }
 
-TEST_CASE("study variants: the textbook contact root and the all-effects engine run the same physics",
-          "[run][study]") {
-  // Neither is for results (ede-bench uses them to show what the stable root and specialization buy), but
-  // both must be right: the same first collisions as the standard engine (to round-off) and energy kept.
-  const InitialState s = lattice_gas(12, 0.015, 1.0, 6);
-  EngineOptions o = walls_until(1e9);
-  o.stop.events = 50000;
-  EngineOptions textbook = o, general = o;
-  textbook.contact = ContactRoot::Textbook;
-  general.all_effects = true;  // inelastic with TC and gravity compiled in, at xi = 1, tc = 0, g = 0
-  auto a = engine(s, o);
-  auto b = engine(s, textbook);
-  auto c = engine(s, general);
-  CHECK(b->effects().find("textbook") != std::string::npos);
-  CHECK(c->effects().find("TC") != std::string::npos);
-  CHECK(c->effects().find("gravity") != std::string::npos);
-  Recorder<double> ra, rb, rc;
-  a->add_sink(&ra);
-  b->add_sink(&rb);
-  c->add_sink(&rc);
-  for (auto* e : {a.get(), b.get(), c.get()}) {
-    REQUIRE(e->run() == RunStatus::ReachedEvents);
-    CHECK(std::abs(kinetic_energy(e->particles()) - e->initial_kinetic_energy()) < 1e-12 * e->initial_kinetic_energy());
-    CHECK(e->check_invariants(1e-9) == "");
-  }
-  const auto pa = ra.of_kind(EventKind::Pair);
-  for (const auto* other : {&rb, &rc}) {
-    const auto po = other->of_kind(EventKind::Pair);
-    REQUIRE(po.size() > 100);
-    for (std::size_t k = 0; k < 100; ++k) {
-      CHECK(std::min(po[k].i, po[k].j) == std::min(pa[k].i, pa[k].j));
-      CHECK(po[k].time == Approx(pa[k].time).margin(1e-9));
-    }
-  }
-  // Combinations the study does not need are refused, not silently run as something else.
-  EngineOptions bad = textbook;
-  bad.physics.restitution = 0.9;
-  CHECK_FALSE(make_engine<double>(s, bad).ok());
-  bad = general;
-  bad.boundary = BoundaryKind::Periodic;
-  CHECK_FALSE(make_engine<double>(s, bad).ok());
-}
-
 TEMPLATE_TEST_CASE("float, double and long double engines run and conserve energy", "[run][scalar]", float,
                    double, long double) {
   const InitialState s = lattice_gas(20, 0.01, 1.0, 2);

@@ -19,13 +19,51 @@ TEST_CASE("ede-bench: a bad command line exits with status 2 and CLI11's message
   CHECK(run_tool("ede-bench", "speed", "bench-no-scene").status == 2);
   CHECK(run_tool("ede-bench", "speed " + source_path("examples/gas.toml") + " --repeat 0", "bench-repeat").status == 2);
   CHECK(run_tool("ede-bench", "", "bench-nothing").status == 2);
-  CHECK(run_tool("ede-bench", "--help", "bench-help").status == 0);
-  CHECK(run_tool("ede-bench", "log --help", "bench-help-log").status == 0);
+  // The old spellings are gone (docs/cli.md: --set stop.events=N, -o FILE, --out-dir DIR).
+  CHECK(run_tool("ede-bench", "speed " + source_path("examples/gas.toml") + " --events 10", "bench-events").status == 2);
+  CHECK(run_tool("ede-bench", "effects --csv x.csv", "bench-csv").status == 2);
+  CHECK(run_tool("ede-bench", "accuracy --out x", "bench-out").status == 2);
+}
+
+TEST_CASE("ede-bench: every command and subcommand answers --help and --version", "[tool][ede-bench]") {
+  for (const std::string sub : {"", "speed", "log", "stress", "effects", "accuracy"}) {
+    INFO(sub);
+    const ToolRun help = run_tool("ede-bench", sub + " --help", "bench-help");
+    CHECK(help.status == 0);
+    CHECK(help.out.find("--help") != std::string::npos);
+    const ToolRun version = run_tool("ede-bench", sub + " --version", "bench-version");
+    CHECK(version.status == 0);
+    CHECK(version.out.rfind("ede-bench" + (sub.empty() ? "" : " " + sub) + ", ede ", 0) == 0);
+  }
+  const ToolRun help = run_tool("ede-bench-elastic", "--help", "bench-elastic-help");
+  CHECK(help.status == 0);
+  CHECK(help.out.find("--set") != std::string::npos);
+  const ToolRun version = run_tool("ede-bench-elastic", "--version", "bench-elastic-version");
+  CHECK(version.status == 0);
+  CHECK(version.out.rfind("ede-bench-elastic, ede ", 0) == 0);
+}
+
+TEST_CASE("ede-bench: --set is checked like the scene's own value before anything runs", "[tool][ede-bench]") {
+  const std::string scene = source_path("examples/bench/gas-N1000-phi0.5-walls.toml");
+  const ToolRun bad = run_tool("ede-bench", "speed " + scene + " --set physics.restitution=2", "bench-set-bad");
+  CHECK(bad.status == 1);
+  CHECK(bad.err.find("gas-N1000-phi0.5-walls.toml: error: physics.restitution") != std::string::npos);
+  CHECK(bad.err.find("--set #1") != std::string::npos);
+  CHECK(bad.out.empty());
+  const std::string csv = temp_path("bench-speed.csv");
+  const ToolRun ok = run_tool("ede-bench",
+                              "speed " + scene + " --repeat 1 --baseline-max-disks 0 --set stop.events=20000 -o " + csv,
+                              "bench-set-ok", 120);
+  INFO(ok.out << ok.err);
+  REQUIRE(ok.status == 0);
+  const std::vector<std::string> rows = lines(read_file(csv));
+  REQUIRE(rows.size() == 2);
+  CHECK(rows[1].rfind("gas-N1000-phi0.5-walls,1000,20000,", 0) == 0);
 }
 
 TEST_CASE("ede-bench stress: packing 0.8 and restitution 0.5 with TC keep every invariant (small)", "[tool][ede-bench][stress]") {
   // The by-hand version runs 10^7+ events (README, reliability); CI runs 3 10^5 per scene.
-  const ToolRun r = run_tool("ede-bench", "stress --events 300000 --disks 2000 --checks 30 --out-dir " +
+  const ToolRun r = run_tool("ede-bench", "stress --set stop.events=300000 --disks 2000 --checks 30 --out-dir " +
                                               std::string(EDE_BINARY_DIR) + "/tests",
                              "stress", 300);
   INFO(r.out << r.err);
@@ -68,7 +106,7 @@ double number(const std::map<std::string, std::string>& row, const std::string& 
 
 TEST_CASE("ede-bench accuracy --quick: a row per setting, finite errors ordered as physics says", "[tool][ede-bench][accuracy]") {
   const std::string out = temp_path("accuracy");
-  const ToolRun r = run_tool("ede-bench", "accuracy --quick --no-plot --out " + out + " --scenes " +
+  const ToolRun r = run_tool("ede-bench", "accuracy --quick --no-plot --out-dir " + out + " --scenes " +
                                               source_path("examples/accuracy") + " --tmp-dir " + out + "-tmp",
                              "accuracy", 300);
   INFO(r.out << r.err);

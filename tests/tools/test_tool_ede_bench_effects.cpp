@@ -22,8 +22,8 @@ TEST_CASE("ede-bench effects: a row per effect, the engine it selects, the all-e
   const std::string csv = temp_path("bench-effects.csv");
   const ToolRun r =
       run_tool("ede-bench",
-               "effects --quick --events 20000 --scene " + source_path("examples/bench/effects/gas-two-species.toml") +
-                   " --csv " + csv,
+               "effects --quick --set stop.events=20000 --scene " +
+                   source_path("examples/bench/effects/gas-two-species.toml") + " -o " + csv,
                "bench-effects", 300);
   INFO(r.out << r.err);
   REQUIRE(r.status == 0);
@@ -36,6 +36,7 @@ TEST_CASE("ede-bench effects: a row per effect, the engine it selects, the all-e
                           "(tc=1e-05), gravity (0, -0.001)"})
     CHECK(contains(r.out, row));
   CHECK(contains(r.out, "only the elastic path compiled in (ede-bench-elastic)"));
+  CHECK(contains(r.out, "(10000 disks), 20000 events per run, 1 rounds"));
 
   const std::vector<std::string> rows = lines(read_file(csv));
   REQUIRE(rows.size() == 10);
@@ -56,8 +57,13 @@ TEST_CASE("ede-bench-elastic: holds the elastic engine alone and refuses other s
   CHECK(other.status == 1);
   CHECK(contains(other.err, "crater.toml: this binary runs elastic gases in a walled box, in double, only"));
   const ToolRun usage = run_tool("ede-bench-elastic", "", "bench-elastic-usage");
-  CHECK(usage.status == 1);
-  CHECK(contains(usage.err, "usage: ede-bench-elastic SCENE.toml [EVENTS]"));
+  CHECK(usage.status == 2);
+  CHECK(contains(usage.err, "scene is required"));
+  const ToolRun run = run_tool("ede-bench-elastic",
+                               source_path("examples/bench/effects/gas-two-species.toml") + " --set stop.events=5000",
+                               "bench-elastic-run");
+  CHECK(run.status == 0);
+  CHECK(contains(run.out, "events=5000 "));
 
   // Its symbols name one Engine instantiation (nm is part of binutils, which the compiler needs).
   const std::string symbols = temp_path("bench-elastic-symbols.txt");

@@ -9,11 +9,13 @@
 #include <cstdio>
 #include <sstream>
 
-#include "bench_common.hpp"
 #include "output_file.hpp"
 #include "plot_runner.hpp"
+#include "study/measurement.hpp"
 
 namespace ede::bench {
+
+using namespace study;
 
 namespace {
 
@@ -47,7 +49,7 @@ std::string engine_csv(const StudyResults& res) {
       << contact_of(r.setting.contact) << "," << r.disks << "," << r.events << "," << r.collisions << ","
       << csv_number(r.ns_per_event) << "," << csv_number(base > 0 ? r.ns_per_event / base : 0) << ","
       << csv_number(r.drift) << "," << csv_number(r.drift_max) << "," << csv_number(r.overlap) << ","
-      << csv_number(r.overlap_snapshot) << "," << res.plan.timing_events << "," << (r.repeats_agree ? 1 : 0) << "," << (r.log_bytes_per_event < 0 ? "" : csv_number(r.log_bytes_per_event));
+      << csv_number(r.overlap_snapshot) << "," << r.timing_events << "," << (r.repeats_agree ? 1 : 0) << "," << (r.log_bytes_per_event < 0 ? "" : csv_number(r.log_bytes_per_event));
     for (std::size_t k = 0; k < res.plan.reversal_collisions.size(); ++k)
       o << "," << (k < r.reversal_rms.size() ? csv_number(r.reversal_rms[k]) : "");
     for (std::size_t k = 0; k < res.plan.reversal_collisions.size(); ++k)
@@ -117,9 +119,10 @@ void engine_tables(std::ostringstream& o, const StudyResults& res) {
     }
     o << "\n";
   }
-  o << "N = " << (res.engine.empty() ? 0.0 : res.engine.front().disks) << " disks per scene. Errors after "
-    << fmt(double(plan.events)) << " engine events (drift: at the end; overlap: the largest at any pair collision); "
-    << "ns/event: median of " << plan.repeat << " runs of " << fmt(double(plan.timing_events))
+  const EngineRow first = res.engine.empty() ? EngineRow{} : res.engine.front();
+  o << "N = " << first.disks << " disks per scene. Errors after " << fmt(first.events)
+    << " engine events (drift: at the end; overlap: the largest at any pair collision); "
+    << "ns/event: median of " << plan.repeat << " runs of " << fmt(first.timing_events)
     << " events, interleaved over the settings (\"(!)\": a timed run's drift differed from the error run's). "
        "d: disk diameter; l: mean free path (v_rms tau).\n\n";
 }

@@ -3,21 +3,13 @@
 #pragma once
 
 #include <string>
-#include <vector>
 
-#include "accuracy_parts.hpp"
 #include "ede/error.hpp"
+#include "study/accuracy.hpp"
 
 namespace ede::bench {
 
-struct StudyResults {
-  StudyPlan plan;
-  std::vector<EngineRow> engine;
-  SteppedStudy stepped;
-  std::vector<LogRow> log;
-};
-
 // Writes the tables into out_dir (which must exist) and, with `plot`, accuracy.png; prints tables.md.
-Status write_report(const StudyResults& results, const std::string& out_dir, bool plot);
+Status write_report(const study::StudyResults& results, const std::string& out_dir, bool plot);
 
 }  // namespace ede::bench

@@ -1,153 +1,29 @@
-// The event-log benchmark; see bench_log.hpp. One run, a log's shape and seeking are measured by the
-// pieces of log_measure.hpp (shared with ede-bench accuracy), each timed run in its own child process.
-// Log sizes do not depend on timing (the writer's bytes are a function of the events), so they come from
-// one run and are checked equal across repeats; times are medians over repeats, and within a repeat the
-// configurations run one after the other, so a slow phase of a shared machine hits all of them alike
-// and the per-repeat ratios (log on / log off) stay meaningful. The parent reads the logs afterwards
-// (sizes, keyframe share, columns) and deletes them.
-#include "bench_log.hpp"
-
-#include <algorithm>
+// ede-bench log [SCENE.toml...] [--reference SCENE.toml] [--repeat N] [--set key=value]...
+//   [--seek-events N] [--skip-seek] [--levels 1,3,...] [--out-dir DIR] [--tmp-dir DIR] [--quick]
+// What the event log costs (study/log_bench.hpp measures): bytes per event by scene and by column, the
+// zstd level, the logging overhead, seeking; Markdown tables, and with --out-dir DIR the same rows as
+// DIR/scenes.csv, columns.csv, levels.csv and seek.csv.
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 
-#include "bench_common.hpp"
-#include "cpu_cycles.hpp"
-#include "log_measure.hpp"
+#include "bench_log_tables.hpp"
+#include "commands.hpp"
+#include "study/cpu_cycles.hpp"
+#include "study/measurement.hpp"
 
 namespace ede::bench {
 
-namespace {
-
-constexpr std::uint64_t kFrequentKeyframes = 1u << 14;  // one keyframe per chunk of the default size
-
-// ---------------------------------------------------------------------------------------------- helpers
-
-std::string percent(double ratio) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%+.1f %%", 100 * (ratio - 1));
-  return buf;
-}
-
-std::string share(double part, double whole) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f %%", whole > 0 ? 100 * part / whole : 0.0);
-  return buf;
-}
-
-std::string mib(double bytes) { return fmt(bytes / 1048576, 4); }
-
-// ------------------------------------------------------------------ configurations run side by side
-
-// The results of one configuration over the repeats, and the shape of its log.
-struct Series {
-  RunConfig config;
-  std::vector<RunResult> runs;
-  LogShape shape;
-  std::string failure;
-  bool sizes_differ = false;
-
-  bool ok() const { return failure.empty() && !runs.empty(); }
-  const RunResult& first() const { return runs.front(); }
-  double med(double (*f)(const RunResult&)) const {
-    std::vector<double> v;
-    for (const RunResult& r : runs) v.push_back(f(r));
-    return median(v);
-  }
-  double wall() const { return med([](const RunResult& r) { return r.wall; }); }
-  double cycles() const { return med([](const RunResult& r) { return r.cycles; }); }
-  double cpu_process() const { return med([](const RunResult& r) { return r.cpu_process; }); }
-  double cpu_main() const { return med([](const RunResult& r) { return r.cpu_main; }); }
-  double cpu_worker() const { return med([](const RunResult& r) { return r.cpu_worker(); }); }
-};
-
-// The median over repeats of (this run / the baseline's run of the same repeat).
-double paired_ratio(const Series& s, const Series& base, double (*f)(const RunResult&)) {
-  std::vector<double> v;
-  for (std::size_t k = 0; k < s.runs.size() && k < base.runs.size(); ++k)
-    if (f(base.runs[k]) > 0) v.push_back(f(s.runs[k]) / f(base.runs[k]));
-  return median(v);
-}
-
-double wall_of(const RunResult& r) { return r.wall; }
-double cpu_of(const RunResult& r) { return r.cpu_process; }
-
-// Runs every configuration `repeat` times, interleaved; reads each log once (after its first run).
-void run_series(std::vector<Series>& all, int repeat, int columns_level) {
-  for (int k = 0; k < repeat; ++k) {
-    for (Series& s : all) {
-      if (!s.failure.empty()) continue;
-      RunResult r = run_measured(s.config);
-      if (!r.ok) {
-        s.failure = r.failure;
-        if (s.config.log) std::filesystem::remove(s.config.log_path);
-        continue;
-      }
-      std::fprintf(stderr, "  %-28s run %d: %.3f s%s\n", s.config.label.c_str(), k + 1, r.wall,
-                   s.config.log ? (", " + fmt(r.bytes / std::max(1.0, r.logged)) + " B/event").c_str() : "");
-      if (s.config.log) {
-        if (k == 0) {
-          const bool columns = columns_level > 0 && s.config.settings.compression_level == columns_level;
-          s.shape = read_shape(s.config.log_path, columns ? columns_level : 0);
-          if (!s.shape.ok) s.failure = s.shape.failure;
-        } else if (r.bytes != s.first().bytes) {
-          s.sizes_differ = true;
-        }
-        std::filesystem::remove(s.config.log_path);
-      }
-      s.runs.push_back(r);
-    }
-  }
-}
-
-RunConfig config(const std::string& label, const std::string& scene, std::uint64_t events, bool log,
-                 const LogSettings& settings, const std::string& out_dir) {
-  RunConfig c;
-  c.label = label;
-  c.scene = scene;
-  c.events = events;
-  c.log = log;
-  c.settings = settings;
-  c.log_path = out_dir + "/" + label + ".ede";
-  return c;
-}
-
-Series series_of(RunConfig c) {
-  Series s;
-  s.config = std::move(c);
-  return s;
-}
-
-void print_failures(const std::vector<Series>& all) {
-  for (const Series& s : all) {
-    if (!s.failure.empty()) std::printf("\n**%s failed**: %s\n", s.config.label.c_str(), s.failure.c_str());
-    if (s.sizes_differ) std::printf("\n**%s: the log size differed between repeats** (expected identical)\n",
-                                    s.config.label.c_str());
-  }
-}
-
-std::FILE* open_csv(const std::string& prefix, const char* what) {
-  if (prefix.empty()) return nullptr;
-  const std::string path = prefix + "-" + what + ".csv";
-  std::FILE* f = std::fopen(path.c_str(), "w");
-  if (!f) std::fprintf(stderr, "ede-bench: warning: cannot write %s\n", path.c_str());
-  return f;
-}
+using namespace study;
 
 // ------------------------------------------------------------------------- 1. bytes per event, scenes
 
-struct ScenePair {
-  std::string label;
-  Series* off;
-  Series* on;
-};
-
-void print_scenes(const std::vector<ScenePair>& pairs, const std::string& csv_prefix) {
+void print_scenes(const std::vector<ScenePair>& pairs, CsvDir& out) {
   std::printf("### Bytes per event and overhead, by scene (default log settings)\n\n");
   std::printf("| scene | N | logged events | collisions | file MiB | B/logged event | B/collision | keyframes | "
               "keyframe share | M events/s (log off) | wall overhead | CPU overhead (both threads) |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-  std::FILE* csv = open_csv(csv_prefix, "scenes");
+  std::FILE* csv = out.open("scenes");
   if (csv)
     std::fprintf(csv, "scene,disks,logged_events,collisions,file_bytes,bytes_per_event,bytes_per_collision,keyframes,"
                       "keyframe_bytes,chunk_bytes,events_per_second_off,wall_ratio,cpu_ratio\n");
@@ -172,7 +48,7 @@ void print_scenes(const std::vector<ScenePair>& pairs, const std::string& csv_pr
               "(log on / log off) in the same repeat; CPU is user + system time of both threads (getrusage).\n\n");
 }
 
-void print_columns(const std::vector<ScenePair>& pairs, const std::string& csv_prefix) {
+void print_columns(const std::vector<ScenePair>& pairs, CsvDir& out) {
   std::printf("### Where the bytes go (chunk columns, bytes per logged event)\n\n");
   std::printf("Each column of every chunk compressed alone at the log's level (an estimate of its share; the "
               "file compresses a chunk as one frame), then the chunks as stored, and the keyframes.\n\n");
@@ -182,7 +58,7 @@ void print_columns(const std::vector<ScenePair>& pairs, const std::string& csv_p
   std::printf(" columns alone, sum | chunks as stored | chunks decompressed | keyframes |\n|---|");
   for (std::size_t k = 0; k < names.size() + 4; ++k) std::printf("---:|");
   std::printf("\n");
-  std::FILE* csv = open_csv(csv_prefix, "columns");
+  std::FILE* csv = out.open("columns");
   if (csv) std::fprintf(csv, "scene,column,bytes,compressed_alone,events\n");
   for (const ScenePair& p : pairs) {
     if (!p.on->ok()) continue;
@@ -208,213 +84,73 @@ void print_columns(const std::vector<ScenePair>& pairs, const std::string& csv_p
               "(pairs) or reflection (walls).\n\n");
 }
 
-// -------------------------------------------------------------- 2 and 3. zstd level, logging overhead
+namespace {
 
-void print_levels(const Series& off, const std::vector<Series*>& levels, const std::string& csv_prefix) {
-  std::printf("### zstd level (%s)\n\n", scene_label(off.config.scene).c_str());
-  std::printf("| level | file MiB | B/logged event | wall s | wall overhead | compressing thread CPU s | "
-              "compressing ns/logged event | CPU overhead (both threads) |\n");
-  std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-  std::FILE* csv = open_csv(csv_prefix, "levels");
-  if (csv)
-    std::fprintf(csv, "level,file_bytes,bytes_per_event,wall,wall_ratio,worker_cpu,worker_ns_per_event,cpu_ratio\n");
-  for (const Series* s : levels) {
-    if (!s->ok() || !off.ok()) continue;
-    const double ev = s->shape.events, wall_ratio = paired_ratio(*s, off, wall_of);
-    const double cpu_ratio = paired_ratio(*s, off, cpu_of);
-    std::printf("| %d | %s | %s | %s | %s | %s | %s | %s |\n", s->config.settings.compression_level,
-                mib(s->shape.file_bytes).c_str(), fmt(s->shape.file_bytes / ev).c_str(), fmt(s->wall()).c_str(),
-                percent(wall_ratio).c_str(), fmt(s->cpu_worker()).c_str(), fmt(1e9 * s->cpu_worker() / ev).c_str(),
-                percent(cpu_ratio).c_str());
-    if (csv)
-      std::fprintf(csv, "%d,%.0f,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n", s->config.settings.compression_level,
-                   s->shape.file_bytes, s->shape.file_bytes / ev, s->wall(), wall_ratio, s->cpu_worker(),
-                   1e9 * s->cpu_worker() / ev, cpu_ratio);
-  }
-  if (csv) std::fclose(csv);
-  std::printf("\nThe compressing thread's CPU time is the process's (getrusage RUSAGE_SELF) minus the event loop "
-              "thread's (RUSAGE_THREAD).\n\n");
-}
+struct LogOptions {
+  LogBenchPlan plan;
+  std::string out_dir;  // the CSV tables
+  bool quick = false;
+};
 
-std::string overhead_label(const Series& s) {
-  if (!s.config.log) return "log off";
-  const LogSettings& l = s.config.settings;
-  return "log on: level " + std::to_string(l.compression_level) + ", keyframe every " +
-         power_of_two(l.keyframe_interval) + " logged events";
-}
-
-void print_overhead(const std::vector<Series*>& rows, bool have_cycles) {
-  const Series& off = *rows.front();
-  std::printf("### Logging overhead (%s, %.3g engine events)\n\n", scene_label(off.config.scene).c_str(),
-              off.ok() ? off.first().events : 0.0);
-  std::printf("| configuration | B/logged event | keyframe share | wall s | wall overhead | %s"
-              "event-loop thread CPU s | both threads CPU s | CPU overhead (both threads) |\n",
-              have_cycles ? "event-loop cycles/event | " : "");
-  std::printf("|---|---:|---:|---:|---:|%s---:|---:|---:|\n", have_cycles ? "---:|" : "");
-  for (const Series* s : rows) {
-    if (!s->ok() || !off.ok()) continue;
-    const bool log = s->config.log;
-    const double ev = s->first().events;
-    const double kf_total = s->shape.keyframe_payload + s->shape.chunk_payload;
-    std::printf("| %s | %s | %s | %s | %s | %s%s | %s | %s |\n", overhead_label(*s).c_str(),
-                log ? fmt(s->shape.file_bytes / s->shape.events).c_str() : "–",
-                log ? share(s->shape.keyframe_payload, kf_total).c_str() : "–",
-                fmt(s->wall()).c_str(), log ? percent(paired_ratio(*s, off, wall_of)).c_str() : "–",
-                have_cycles ? (fmt(s->cycles() / ev, 4) + " | ").c_str() : "", fmt(s->cpu_main()).c_str(),
-                fmt(s->cpu_process()).c_str(), log ? percent(paired_ratio(*s, off, cpu_of)).c_str() : "–");
-  }
-  std::printf("\nCycles: user-mode cycles of the event-loop thread only (perf events); the compressing thread "
-              "shows in the CPU-time columns.\n\n");
-}
-
-// ------------------------------------------------------------------------------------------- 4. seek
-
-SeekRow seek_row(const LogBenchOptions& o, std::uint64_t interval, bool rebuilds) {
-  LogSettings settings;
-  settings.keyframe_interval = interval;
-  RunConfig c = config("seek-" + power_of_two(interval) + (rebuilds ? "-rebuilds" : ""), o.reference, o.seek_events,
-                       true, settings, o.out_dir);
-  if (!rebuilds) c.overrides.push_back(kNoRebuilds);
-  return seek_row(c, power_of_two(interval) + (rebuilds ? " (automatic rebuilds)" : ""), interval, rebuilds, o.repeat);
-}
-
-void print_seek(const std::vector<SeekRow>& rows, const Series& sim, const std::string& csv_prefix) {
-  const double sim_eps = sim.ok() ? sim.first().events / sim.wall() : 0;
-  std::printf("### Seeking (%s, %.3g engine events)\n\n", scene_label(sim.config.scene).c_str(),
-              sim.ok() ? sim.first().events : 0.0);
-  std::printf("| keyframe interval | keyframes (resumable) | logged events | log MiB | B/logged event | "
-              "keyframe share | seek min ms | seek median ms | seek max ms | fresh Replay ms | "
-              "replay M logged events/s | simulation M logged events/s (log on) | replay / simulation |\n");
-  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-  std::FILE* csv = open_csv(csv_prefix, "seek");
-  if (csv)
-    std::fprintf(csv, "keyframe_interval,automatic_rebuilds,keyframes,resumable_keyframes,logged_events,file_bytes,"
-                      "seek_min,seek_median,seek_max,create_median,replay_events_per_second,"
-                      "simulation_logged_events_per_second\n");
-  for (const SeekRow& r : rows) {
-    if (!r.failure.empty()) {
-      std::printf("| %s | failed: %s |\n", r.label.c_str(), r.failure.c_str());
-      continue;
-    }
-    const SeekStats st = seek_stats(r);
-    const double sim_logged_eps = r.build.logged / r.build.wall;
-    std::printf("| %s | %.0f (%.0f) | %.4g | %s | %s | %s | %s | %s | %s | %s | %s | %s | %sx |\n", r.label.c_str(),
-                r.shape.keyframes, r.shape.resumable_keyframes, r.shape.events, mib(r.shape.file_bytes).c_str(),
-                fmt(r.shape.file_bytes / r.shape.events).c_str(),
-                share(r.shape.keyframe_payload, r.shape.keyframe_payload + r.shape.chunk_payload).c_str(),
-                fmt(1e3 * st.min).c_str(), fmt(1e3 * st.median).c_str(), fmt(1e3 * st.max).c_str(),
-                fmt(1e3 * st.create).c_str(), fmt(st.replay_events_per_second / 1e6).c_str(),
-                fmt(sim_logged_eps / 1e6).c_str(), fmt(st.replay_events_per_second / sim_logged_eps).c_str());
-    if (csv)
-      std::fprintf(csv, "%llu,%d,%.0f,%.0f,%.0f,%.0f,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n", (unsigned long long)r.interval,
-                   r.rebuilds ? 1 : 0, r.shape.keyframes, r.shape.resumable_keyframes, r.shape.events,
-                   r.shape.file_bytes, st.min, st.median, st.max, st.create, st.replay_events_per_second,
-                   sim_logged_eps);
-  }
-  if (csv) std::fclose(csv);
-  std::printf("\nSeek: Replay::seek_time at t_end (k + 0.37) / %d, k = 0..%d, each on a freshly created Replay "
-              "(its creation, which loads the first keyframe, is the \"fresh Replay\" column and not in the seek "
-              "time); per time the median of %zu repeats, then min / median / max over the times. The log was "
-              "just written, so it is read from the page cache. Rows without \"automatic rebuilds\" set "
-              "engine.rebuild_interval = 2^40 so that keyframe_interval alone places the keyframes; the last row "
-              "is the default configuration, where every engine rebuild (every max(2^20, 16 N) engine events) "
-              "also writes a (resumable) keyframe.\n\n",
-              kSeekTimes, kSeekTimes - 1, rows.empty() ? std::size_t(0) : rows.front().repeats.size());
-  std::printf("Replay throughput: a fresh Replay applying every logged event from the start (for_each_event, "
-              "median of the repeats); simulation: the run that wrote the log.\n\n");
-  const SeekRow* defaults = rows.empty() || !rows.back().failure.empty() ? nullptr : &rows.back();
-  if (sim.ok() && defaults) {
-    const double replay_eps = seek_stats(*defaults).replay_events_per_second;
-    const double logged_eps = defaults->shape.events / sim.wall();
-    std::printf("The same run as the last row without a log (median of %zu): %.3g s, %.3g M engine events/s, "
-                "%.3g M logged events/s; replay applies events %.3gx as fast.\n\n",
-                sim.runs.size(), sim.wall(), sim_eps / 1e6, logged_eps / 1e6, replay_eps / logged_eps);
-  }
+int run_log(LogOptions o) {
+  if (o.plan.scenes.empty()) o.plan.scenes = default_log_bench_scenes();
+  if (o.plan.reference.empty()) o.plan.reference = default_log_bench_reference();
+  if (o.quick) o.plan.overrides.insert(o.plan.overrides.begin(), "stop.events=500000");  // a --set wins
+  std::vector<std::string> all = o.plan.scenes;
+  all.push_back(o.plan.reference);
+  if (!check_scenes(all, o.plan.overrides)) return 1;
+  CsvDir csv{o.out_dir};
+  std::error_code ec;
+  if (!o.out_dir.empty() && (std::filesystem::create_directories(o.out_dir, ec), ec))
+    return fail("cannot create " + o.out_dir + ": " + ec.message());
+  auto made = run_log_bench(o.plan);
+  if (!made) return fail("log: " + made.error().message);
+  LogBenchResults& r = made.value();
+  std::printf("Medians of %d runs per configuration, interleaved; each run in its own process. The machine is "
+              "shared: compare ratios and medians, not single wall times.\n\n",
+              o.plan.repeat);
+  std::vector<ScenePair> pairs;
+  for (std::size_t k = 0; k + 1 < r.scenes.size(); k += 2)
+    pairs.push_back({scene_label(r.scenes[k].config.scene), &r.scenes[k], &r.scenes[k + 1]});
+  print_scenes(pairs, csv);
+  print_columns(pairs, csv);
+  const LogSettings defaults;
+  std::vector<Series*> levels, overhead{&r.ref.front()};
+  for (std::size_t k = 1; k + 1 < r.ref.size(); ++k) levels.push_back(&r.ref[k]);
+  print_levels(r.ref.front(), levels, csv);
+  for (Series* s : levels)
+    if (s->config.settings.compression_level == defaults.compression_level) overhead.push_back(s);
+  overhead.push_back(&r.ref.back());
+  print_overhead(overhead, CpuCycles().available());
+  if (!o.plan.skip_seek) print_seek(r.seeks, r.sim.front(), csv);
+  print_failures(r.scenes);
+  print_failures(r.ref);
+  print_failures(r.sim);
+  return r.ok() && !csv.failed ? 0 : 1;
 }
 
 }  // namespace
 
-std::vector<std::string> default_log_bench_scenes() {
-  return {"examples/bench/gas-N10000-phi0.5-periodic.toml", "examples/bench/gas-N10000-phi0.5-walls.toml",
-          "examples/bench/gas-N10000-phi0.3-periodic.toml", "examples/bench/gas-N1000-phi0.5-periodic.toml"};
-}
-
-std::string default_log_bench_reference() { return "examples/bench/gas-N10000-phi0.5-periodic.toml"; }
-
-int run_log_bench(const LogBenchOptions& o) {
-  std::error_code ec;
-  const bool made_dir = std::filesystem::create_directories(o.out_dir, ec);
-  if (ec) {
-    std::fprintf(stderr, "ede-bench log: cannot create %s: %s\n", o.out_dir.c_str(), ec.message().c_str());
-    return 1;
-  }
-  const LogSettings defaults;
-  tools::CpuCycles probe;
-
-  // 1. Scenes: log off and on (default settings).
-  std::vector<Series> scenes;
-  for (const std::string& path : o.scenes) {
-    const std::string label = scene_label(path);
-    scenes.push_back(series_of(config(label + "-off", path, o.events, false, defaults, o.out_dir)));
-    scenes.push_back(series_of(config(label + "-on", path, o.events, true, defaults, o.out_dir)));
-  }
-  std::fprintf(stderr, "ede-bench log: scenes\n");
-  run_series(scenes, o.repeat, defaults.compression_level);
-
-  // 2 and 3. The reference scene: log off, every level, and frequent keyframes.
-  std::vector<Series> ref;
-  ref.push_back(series_of(config("log off", o.reference, o.events, false, defaults, o.out_dir)));
-  std::vector<int> level_list = o.levels;  // the default level always runs: the overhead table needs it
-  if (std::find(level_list.begin(), level_list.end(), defaults.compression_level) == level_list.end())
-    level_list.push_back(defaults.compression_level);
-  for (const int level : level_list) {
-    LogSettings s = defaults;
-    s.compression_level = level;
-    ref.push_back(series_of(config("level-" + std::to_string(level), o.reference, o.events, true, s, o.out_dir)));
-  }
-  LogSettings frequent = defaults;
-  frequent.keyframe_interval = kFrequentKeyframes;
-  ref.push_back(series_of(config("keyframes-2^14", o.reference, o.events, true, frequent, o.out_dir)));
-  std::fprintf(stderr, "ede-bench log: levels and overhead (%s)\n", o.reference.c_str());
-  run_series(ref, o.repeat, 0);
-
-  // 4. Seeking: logs built once per keyframe interval, seeks repeated; and the simulation without a log.
-  std::vector<SeekRow> seeks;
-  std::vector<Series> sim;
-  sim.push_back(series_of(config("seek-run-off", o.reference, o.seek_events, false, defaults, o.out_dir)));
-  if (!o.skip_seek) {
-    std::fprintf(stderr, "ede-bench log: seeking\n");
-    run_series(sim, o.repeat, 0);
-    for (const int k : {16, 18, 20, 22}) seeks.push_back(seek_row(o, std::uint64_t(1) << k, false));
-    seeks.push_back(seek_row(o, defaults.keyframe_interval, true));
-  }
-
-  std::printf("Medians of %d runs per configuration, interleaved; each run in its own process. The machine is "
-              "shared: compare ratios and medians, not single wall times.\n\n",
-              o.repeat);
-  std::vector<ScenePair> pairs;
-  for (std::size_t k = 0; k + 1 < scenes.size(); k += 2)
-    pairs.push_back({scene_label(scenes[k].config.scene), &scenes[k], &scenes[k + 1]});
-  print_scenes(pairs, o.csv_prefix);
-  print_columns(pairs, o.csv_prefix);
-  std::vector<Series*> levels, overhead{&ref.front()};
-  for (std::size_t k = 1; k + 1 < ref.size(); ++k) levels.push_back(&ref[k]);
-  print_levels(ref.front(), levels, o.csv_prefix);
-  for (Series* s : levels)
-    if (s->config.settings.compression_level == defaults.compression_level) overhead.push_back(s);
-  overhead.push_back(&ref.back());
-  print_overhead(overhead, probe.available());
-  if (!o.skip_seek) print_seek(seeks, sim.front(), o.csv_prefix);
-  print_failures(scenes);
-  print_failures(ref);
-  print_failures(sim);
-
-  if (made_dir) std::filesystem::remove(o.out_dir, ec);  // only if empty; the logs are already gone
-  bool ok = true;
-  for (const auto* all : {&scenes, &ref, &sim})
-    for (const Series& s : *all) ok = ok && s.failure.empty();
-  for (const SeekRow& r : seeks) ok = ok && r.failure.empty();
-  return ok ? 0 : 1;
+Command log_command(CLI::App& app) {
+  auto o = std::make_shared<LogOptions>();
+  CLI::App* l = app.add_subcommand("log", "event log: bytes per event, zstd level, overhead, seek, replay speed");
+  l->add_option("scenes", o->plan.scenes, "scene files (default: four N = 10^3 and 10^4 scenes of examples/bench)");
+  l->add_option("--reference", o->plan.reference, "the scene of the level, overhead and seek measurements");
+  CLI::Option* repeat = l->add_option("--repeat", o->plan.repeat, "runs per configuration; medians are reported")
+                            ->check(CLI::Range(1, 100));
+  add_set_option(l, o->plan.overrides);
+  CLI::Option* seek_events = l->add_option("--seek-events", o->plan.seek_events,
+                                           "engine events (stop.events) of the logs built for seeking");
+  l->add_flag("--skip-seek", o->plan.skip_seek, "skip the seek and replay measurements");
+  l->add_option("--levels", o->plan.levels, "zstd levels to compare")->delimiter(',')->check(CLI::Range(1, 22));
+  l->add_option("--out-dir", o->out_dir, "also write the tables as CSV files into this folder");
+  l->add_option("--tmp-dir", o->plan.tmp_dir, "where the temporary logs go (deleted as soon as read)");
+  l->add_flag("--quick", o->quick, "a smoke run (well under a minute): 1 repeat, stop.events=500000, 2e6 seek events");
+  return {l, [o, repeat, seek_events] {
+            if (o->quick && !repeat->count()) o->plan.repeat = 1;
+            if (o->quick && !seek_events->count()) o->plan.seek_events = 2000000;
+            return run_log(*o);
+          }};
 }
 
 }  // namespace ede::bench

@@ -1,152 +1,25 @@
-// ede-bench stress: long runs of the hard cases with every invariant checked as they go.
-//
-// Two scenes, built as scene text and run through the normal path (scene loader, setup, engine, log):
-//   dense      elastic disks on a hexagonal lattice at packing fraction 0.8 in a periodic box;
-//   inelastic  restitution 0.5 with the TC model at packing fraction 0.3 in a periodic box (inelastic
-//              collapse would stall it without TC).
-// Every `--checks` slice of the run: no pair overlaps beyond 1e-9 of its contact distance and no
-// prediction lies in the past (check_invariants); the energy is constant to 1e-10 (dense) or never
-// increases (inelastic); the momentum is constant (periodic boxes, any restitution). At the end the log
-// is replayed and must give the engine's state bit for bit. CI runs it small (tests/test_tool_ede_bench.cpp);
-// by hand with --events 10000000 or more (numbers in the README's reliability section).
-#include "bench_stress.hpp"
-
-#include <chrono>
-#include <cmath>
+// ede-bench stress [--set key=value]... [--disks N] [--checks N] [--out-dir DIR] [--keep-logs]: the hard
+// cases run long with every invariant checked (study/stress.hpp); a Markdown table, status 1 if any check
+// failed. Their length is their stop.events (10^7; --set stop.events=N).
 #include <cstdio>
-#include <cstring>
-#include <string>
+#include <memory>
 
-#include "bench_common.hpp"
-#include "engine/engine.hpp"
-#include "log/log_reader.hpp"
-#include "log/log_writer.hpp"
-#include "replay/replay.hpp"
-#include "ede/scene.hpp"
-#include "setup/setup.hpp"
+#include "commands.hpp"
+#include "study/measurement.hpp"
+#include "study/stress.hpp"
 
 namespace ede::bench {
 
 namespace {
 
-std::string dense_scene(std::uint64_t disks) {
-  return "seed = 31\n[box]\nsize = [1.0, 1.0]\nboundary = \"periodic\"\n"
-         "[[species]]\nname = \"disks\"\ncount = " + std::to_string(disks) +
-         "\n[species.placement]\nkind = \"lattice\"\npacking_fraction = 0.8\n"
-         "[species.velocity]\nkind = \"speed\"\nspeed = 1.0\n[stop]\ntime = 1e9\n";
-}
+using study::fmt;
 
-std::string inelastic_scene(std::uint64_t disks) {
-  return "seed = 37\n[box]\nsize = [1.0, 1.0]\nboundary = \"periodic\"\n"
-         "[physics]\nrestitution = 0.5\ntc = 1e-6\n"
-         "[[species]]\nname = \"grains\"\ncount = " + std::to_string(disks) +
-         "\n[species.placement]\nkind = \"random\"\npacking_fraction = 0.3\n"
-         "[species.velocity]\nkind = \"speed\"\nspeed = 1.0\n[stop]\ntime = 1e9\n";
-}
-
-struct Totals {
-  double energy = 0, px = 0, py = 0, scale = 0;
-};
-
-Totals totals(const Particles<double>& p) {
-  Totals t;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const double m = p.mass[i], vx = p.disk[i].vx, vy = p.disk[i].vy;
-    t.energy += 0.5 * m * (vx * vx + vy * vy);
-    t.px += m * vx;
-    t.py += m * vy;
-    t.scale += m * std::hypot(vx, vy);
-  }
-  return t;
-}
-
-struct Outcome {
-  std::string scene, status, failure;
-  std::uint64_t disks = 0, events = 0;
-  double seconds = 0, largest_overlap = 0, energy_ratio = 1, worst_energy_drift = 0, momentum_drift = 0;
-  double tc_share = 0;
-  bool replay_exact = false;
-};
-
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-
-Outcome run_scene(const std::string& name, const std::string& text, const StressOptions& o) {
-  Outcome out;
-  out.scene = name;
-  const auto fail = [&](const std::string& why) {
-    out.failure = why;
-    return out;
-  };
-  auto scene = parse_scene_text(text, name + ".toml");
-  if (!scene) return fail(scene.error().message);
-  auto initial = build_initial_state(scene.value());
-  if (!initial) return fail(initial.error().message);
-  const EngineOptions options = engine_options_from(scene.value(), initial.value().size());
-  auto made = make_engine<double>(initial.value(), options);
-  if (!made) return fail(made.error().message);
-  EngineApi<double>& engine = *made.value();
-  out.disks = initial.value().size();
-  const std::string log_path = o.out_dir + "/stress-" + name + ".ede";
-  auto writer = LogWriter<double>::create(log_path, LogRunInfo::from(scene.value(), options, initial.value().species_names),
-                                          LogSettings::from(scene.value().log));
-  if (!writer) return fail(writer.error().message);
-  engine.add_sink(writer.value().get());
-
-  const bool elastic = options.physics.restitution == 1.0 && options.physics.wall_restitution == 1.0;
-  const Totals start = totals(engine.particles());
-  double previous_energy = start.energy;
-  const std::uint64_t slice = std::max<std::uint64_t>(1, o.events / std::max<std::uint64_t>(1, o.checks));
-  const auto t0 = std::chrono::steady_clock::now();
-  RunStatus status = RunStatus::Running;
-  while (out.failure.empty() && engine.counts().events() < o.events) {
-    status = engine.run(std::min(slice, o.events - engine.counts().events()));
-    if (status != RunStatus::Running) break;
-    if (const std::string bad = engine.check_invariants(1e-9); !bad.empty()) out.failure = bad.substr(0, 300);
-    out.largest_overlap = std::max(out.largest_overlap, engine.largest_overlap());
-    const Totals now = totals(engine.particles());
-    out.worst_energy_drift = std::max(out.worst_energy_drift, std::abs(now.energy / start.energy - 1));
-    if (elastic && std::abs(now.energy / start.energy - 1) > 1e-10) out.failure = "the energy drifted";
-    if (!elastic && now.energy > previous_energy * (1 + 1e-12)) out.failure = "the energy increased";
-    previous_energy = now.energy;
-    out.momentum_drift = std::max(out.momentum_drift, std::hypot(now.px - start.px, now.py - start.py) / start.scale);
-    if (out.momentum_drift > 1e-9) out.failure = "the momentum drifted";
-  }
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  writer.value()->on_finish(engine.time(), engine.particles(), status);  // close the log where we stopped
-  out.events = engine.counts().events();
-  out.status = status == RunStatus::Running ? "ran its events" : to_string(status);
-  out.energy_ratio = totals(engine.particles()).energy / start.energy;
-  out.tc_share = engine.counts().collisions() ? double(engine.counts().tc_elastic) / double(engine.counts().collisions()) : 0;
-  if (status == RunStatus::Stalled) out.failure = engine.stall_message();
-  if (!writer.value()->error().empty()) out.failure = writer.value()->error();
-  if (!out.failure.empty()) return out;
-
-  auto log = LogReader::open(log_path);
-  if (!log) return fail(log.error().message);
-  auto replay = Replay<double>::create(log.value());
-  if (!replay) return fail(replay.error().message);
-  if (Status s = replay.value()->seek_time(engine.time()); !s) return fail(s.error().message);
-  out.replay_exact = true;
-  for (std::size_t i = 0; i < out.disks; ++i) {
-    const Disk<double>& a = replay.value()->particles().disk[i];
-    const Disk<double>& b = engine.particles().disk[i];
-    out.replay_exact = out.replay_exact && same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.vx, b.vx) &&
-                       same_bits(a.vy, b.vy) && same_bits(a.t, b.t);
-  }
-  if (!out.replay_exact) out.failure = "the log does not replay to the engine's state";
-  if (!o.keep_logs) std::remove(log_path.c_str());
-  return out;
-}
-
-}  // namespace
-
-int run_stress(const StressOptions& o) {
-  const Outcome results[] = {run_scene("dense", dense_scene(o.disks), o),
-                             run_scene("inelastic", inelastic_scene(o.disks), o)};
+int stress(const study::StressPlan& plan) {
+  const std::vector<study::StressOutcome> results = study::run_stress(plan);
   std::printf("| scene | N | events | wall s | M events/s | largest overlap | energy | momentum drift | "
               "TC-elastic | log replay | result |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---|\n");
   int status = 0;
-  for (const Outcome& r : results) {
+  for (const study::StressOutcome& r : results) {
     const std::string energy = r.scene == "dense" ? "drift " + fmt(r.worst_energy_drift, 2)
                                                   : "E/E0 = " + fmt(r.energy_ratio, 3) + ", never rose";
     std::printf("| %s | %llu | %llu | %s | %s | %s | %s | %s | %s | %s | %s |\n", r.scene.c_str(),
@@ -158,6 +31,19 @@ int run_stress(const StressOptions& o) {
     if (!r.failure.empty()) status = 1;
   }
   return status;
+}
+
+}  // namespace
+
+Command stress_command(CLI::App& app) {
+  auto plan = std::make_shared<study::StressPlan>();
+  CLI::App* st = app.add_subcommand("stress", "hard cases run long with every invariant checked");
+  add_set_option(st, plan->overrides);
+  st->add_option("--disks", plan->disks, "disks per scene (default 10^4)");
+  st->add_option("--checks", plan->checks, "invariant checks per scene (default 50)")->check(CLI::Range(1, 100000));
+  st->add_option("--out-dir", plan->out_dir, "where the logs go (default /tmp)");
+  st->add_flag("--keep-logs", plan->keep_logs, "keep the logs");
+  return {st, [plan] { return stress(*plan); }};
 }
 
 }  // namespace ede::bench

@@ -1,24 +1,27 @@
 // ede-bench-elastic: the elastic gas with only the elastic path compiled in. It builds
 // Engine<double, WallsBoundary, Elastic> directly and runs it, without make_engine, so this binary holds
-// one engine instantiation, not the dozens of ede-bench. `ede-bench effects` runs it beside its own runs
-// of the same scene (which go through make_engine, with every effect compiled into the binary) to show
-// that compiling the other effects in costs the elastic gas nothing. Not a user tool: it prints the
+// one engine instantiation, not the library's table of them. `ede-bench effects` runs it beside its own
+// runs of the same scene (which go through make_engine, with every effect compiled into the binary) to
+// show that compiling the other effects in costs the elastic gas nothing. Not a user tool: it prints the
 // key=value line of the benchmarks' child processes.
 //
-//   ede-bench-elastic SCENE.toml [EVENTS]
+//   ede-bench-elastic SCENE.toml [--set key=value]...
+#include <CLI/CLI.hpp>
 #include <cstdio>
-#include <cstdlib>
 #include <string>
+#include <vector>
 
+#include "command_line.hpp"
 #include "ede/scene.hpp"
+#include "engine/engine_checks.hpp"
+#include "report_error.hpp"
 #include "setup/setup.hpp"
-#include "engine/engine_factory.hpp"
-#include "timed_run.hpp"
+#include "study/timed_run.hpp"
 
 namespace {
 
 int fail(const std::string& message) {
-  std::fprintf(stderr, "ede-bench-elastic: error: %s\n", message.c_str());
+  ede::tools::report_error("ede-bench-elastic", message);
   return 1;
 }
 
@@ -26,20 +29,27 @@ int fail(const std::string& message) {
 
 int main(int argc, char** argv) {
   using namespace ede;
-  if (argc < 2 || argc > 3) return fail("usage: ede-bench-elastic SCENE.toml [EVENTS]");
+  std::string path;
+  std::vector<std::string> sets;
+  CLI::App app{"ede-bench-elastic: the elastic gas in a binary holding the elastic engine alone (ede-bench effects)"};
+  app.add_option("scene", path, "scene file (TOML): an elastic gas in a walled box, in double")->required();
+  app.add_option("--set", sets, "override a scene value, e.g. --set stop.events=100000 (repeatable)");
+  tools::add_version_flags(app, "ede-bench-elastic");
+  if (const auto stop = tools::parse_command_line(app, argc, argv)) return *stop;
   std::vector<Override> overrides;
-  if (argc == 3) overrides.push_back({std::string("stop.events=") + argv[2]});
-  auto scene = load_scene_file(argv[1], overrides);
+  for (const std::string& s : sets) overrides.push_back({s});
+  auto scene = load_scene_file(path, overrides);
   if (!scene) return fail(scene.error().message);
-  if (scene.value().boundary != BoundaryKind::Walls || !scene.value().physics.elastic() ||
-      scene.value().physics.has_gravity() || scene.value().physics.tc > 0 || scene.value().scalar != ScalarKind::Double)
-    return fail(std::string(argv[1]) + ": this binary runs elastic gases in a walled box, in double, only");
-  auto initial = build_initial_state(scene.value());
+  const Scene& sc = scene.value();
+  if (sc.boundary != BoundaryKind::Walls || !sc.physics.elastic() || sc.physics.has_gravity() ||
+      sc.physics.tc > 0 || sc.scalar != ScalarKind::Double)
+    return fail(path + ": this binary runs elastic gases in a walled box, in double, only");
+  auto initial = build_initial_state(sc);
   if (!initial) return fail(initial.error().message);
-  const EngineOptions options = engine_options_from(scene.value(), initial.value().size());
+  const EngineOptions options = engine_options_from(sc, initial.value().size());
   GridShape shape;
   if (Status s = check_engine_input(initial.value(), options, shape); !s) return fail(s.error().message);
   Engine<double, WallsBoundary, Elastic> engine(initial.value(), options, shape, nullptr);
-  std::printf("%s disks=%zu\n", tools::timed_run_report(engine).c_str(), initial.value().size());
+  std::printf("%s disks=%zu\n", study::timed_run_report(engine).c_str(), initial.value().size());
   return 0;
 }

@@ -6,7 +6,7 @@
 // the earlier root of a t^2 + 2 b t + c = 0 is t = c / (-b + sqrt(b^2 - a c)), which stays accurate for
 // grazing (d -> 0 is fine: no subtraction of nearly equal numbers) and near-contact (c -> 0) pairs, where
 // the textbook (-b - sqrt(d)) / a adds a cancellation of its own. Rejected: the textbook form (kept only
-// as pair_contact_time_textbook for the accuracy study).
+// in study/textbook_contact.hpp, for the accuracy study).
 // Round-off floor on b: positions carry an absolute rounding error of about eps * L (L the box size), so
 // b = dx.dv is only known to about eps * L * |dv|. A pair whose b lies inside that noise is neither
 // approaching nor receding as far as the arithmetic can tell; we treat it as not approaching. Without
@@ -46,22 +46,6 @@ template <class T>
 inline T b_noise2_for(T length) {
   const T floor = T(8) * scalar_limits<T>::epsilon() * length;
   return floor * floor;
-}
-
-// The textbook root (-b - sqrt(d)) / a, with the same early outs (and round-off floor) as above so that
-// only the root differs: for the accuracy study (ede-bench accuracy, TextbookContact engines) only.
-template <class T>
-inline T pair_contact_time_textbook(T dx, T dy, T dvx, T dvy, T s, T b_noise2 = T(0)) {
-  const T b = dx * dvx + dy * dvy;
-  if (!(b < 0)) return kNever<T>;
-  const T a = dvx * dvx + dvy * dvy;
-  if (b * b <= b_noise2 * a) return kNever<T>;
-  const T c = (dx * dx + dy * dy) - s * s;
-  if (c <= 0) return T(0);
-  const T d = b * b - a * c;
-  if (!(d > 0)) return kNever<T>;
-  const T t = (-b - ede::sqrt(d)) / a;
-  return t > 0 ? t : T(0);
 }
 
 // Time for a coordinate x moving at speed v to reach the line at `target`. The caller picks the line

@@ -1,12 +1,17 @@
-// Effects: the small policy types an Engine is instantiated with, one per physical option a scene uses.
+// Effects: the small policy types an Engine is instantiated with, one axis per kind of physics a scene
+// can switch on. Three axes of two, and the engine table (engine_factory.hpp) builds five of the eight.
 //
-// The engine branches on these with `if constexpr`, so code for an effect a scene does not use is not
-// compiled into that scene's engine at all: an elastic gas in a periodic box has no restitution, no TC
-// bookkeeping, no energy accounting and no wall code in its event loop. Runtime values (xi, xi_w, tc) are
-// read only by the instantiations that use them. make_engine picks the instantiation once, at start.
-// Rejected: runtime flags tested per event (cheap, but every effect then costs every scene something, and
-// DESIGN.md section 6 asks for "pays nothing"), and virtual policies (a call per event).
+// The engine branches on them with `if constexpr`, so code for an effect a scene does not use is not
+// compiled into that scene's engine: an elastic gas has no restitution, no TC bookkeeping, no energy
+// accounting, and in a periodic box no wall code, in its event loop. Within Dissipative the values decide
+// at run time (xi, xi_w, per species pair, tc): `ede-bench effects` measured restitution, per-pair
+// restitution and the TC model at 0.98-1.00 x the elastic gas's cost per event, so splitting them into
+// more instantiations bought nothing but build time.
+// Rejected: runtime flags for everything (then every effect costs every scene something, and DESIGN.md
+// section 6 asks for "pays nothing"), and virtual policies (a call per event).
 #pragma once
+
+#include "core/geometry.hpp"
 
 namespace ede {
 
@@ -19,17 +24,16 @@ struct PeriodicBoundary {
   static constexpr const char* kName = "periodic";
 };
 
+// Every collision elastic: the impulse 2 (dv.n) / (m_i + m_j), walls mirror the velocity.
 struct Elastic {
-  static constexpr bool kInelastic = false;
-  static constexpr bool kTc = false;
+  static constexpr bool kDissipative = false;
 };
-struct Inelastic {
-  static constexpr bool kInelastic = true;
-  static constexpr bool kTc = false;
-};
-struct InelasticTc {
-  static constexpr bool kInelastic = true;
-  static constexpr bool kTc = true;
+// Restitution below 1 for pairs (one value, or per pair of species) or walls, and the TC model when tc > 0;
+// the kinetic energy is tracked (stop.energy_fraction) and a run cooled below what T resolves ends.
+// With xi = 1 it computes exactly what Elastic does (1 + xi = 2; a wall multiplies by 1, exact), which is
+// why an elastic scene under gravity runs the gravity engine, which is Dissipative.
+struct Dissipative {
+  static constexpr bool kDissipative = true;
 };
 
 // Fields acting on the disks between events. Without one, disks move in straight lines (drift); with
@@ -43,13 +47,14 @@ struct UniformGravity {
   static constexpr bool kGravity = true;
 };
 
-// The pair contact-time root. Engines always use the stable form (geometry.hpp); the textbook form exists
-// only so that ede-bench accuracy can show what it costs in accuracy (EngineOptions::contact).
+// The pair contact-time root: a function, not a flag. The library's engines use the stable form of
+// geometry.hpp; study/ adds a textbook one (for the accuracy study) without touching the engine.
 struct StableContact {
-  static constexpr bool kTextbook = false;
-};
-struct TextbookContact {
-  static constexpr bool kTextbook = true;
+  static constexpr const char* kLabel = "";  // appended to EngineApi::effects()
+  template <class T>
+  static T time(T dx, T dy, T dvx, T dvy, T s, T b_noise2) {
+    return pair_contact_time(dx, dy, dvx, dvy, s, b_noise2);
+  }
 };
 
 }  // namespace ede

@@ -1,9 +1,9 @@
 // The engine's interface inside the library: options, and EngineApi<T>, created by make_engine<T>().
 //
-// make_engine looks at the effects a scene uses (walls or periodic; elastic, inelastic, or inelastic with
-// the TC model) once, and returns the one Engine instantiation built for exactly that combination: an
-// elastic gas runs code in which restitution and TC do not exist. The virtual calls here happen per run()
-// call, never per event. The scalar type T (float, double, long double) is the caller's choice; where the
+// make_engine looks at the effects a scene uses (walls or periodic; elastic or dissipative; gravity) once,
+// and returns the Engine instantiation with the fewest effects compiled in that computes the run (the
+// table: EngineKind, engine_factory.hpp): an elastic gas runs code in which restitution and TC do not
+// exist. The virtual calls here happen per run() call, never per event. The scalar type T (float, double, long double) is the caller's choice; where the
 // library was built with EDE_HAVE_FLOAT128, __float128 too (engine only: the log and replay do not know it).
 #pragma once
 
@@ -29,8 +29,6 @@ enum class Algorithm {
   AllPairs,  // the naive baseline: after each event, the disks involved are checked against all N others
 };
 
-enum class ContactRoot { Stable, Textbook };
-
 struct EngineOptions {
   BoundaryKind boundary = BoundaryKind::Walls;
   PhysicsSpec physics;
@@ -45,14 +43,10 @@ struct EngineOptions {
   // Give up (RunStatus::Stalled) after this many consecutive events at one and the same time
   // (0: max(10^6, 100 N)).
   std::uint64_t stall_limit = 0;
-  // Study variants (ede-bench); scenes never set them, and runs with them are not for results.
-  // Textbook: the cancellation-prone root (-b - sqrt(d))/a for pair contact times (accuracy study; built
-  // for elastic scenes without gravity only).
-  ContactRoot contact = ContactRoot::Stable;
-  // The one instantiation that carries every effect (walls, inelastic with TC and per-pair restitution,
-  // gravity), whatever the scene uses: the "no specialization" baseline of ede-bench effects. Walls only.
-  bool all_effects = false;
 };
+
+// The TC model is on when a scene dissipates and sets tc > 0 (an elastic scene's tc changes nothing).
+inline bool uses_tc_model(const PhysicsSpec& ph) { return ph.tc > 0 && !ph.elastic(); }
 
 // The engine options a scene asks for; `disks` sizes the automatic rebuild interval.
 EngineOptions engine_options_from(const Scene& scene, std::size_t disks);
@@ -104,11 +98,32 @@ class EngineApi {
   virtual double largest_overlap() const = 0;
 };
 
+// The engines the library builds, for each scalar type (engine_factory.hpp: the table, and why these).
+enum class EngineKind {
+  PeriodicElastic,      // an elastic gas in a periodic box
+  PeriodicDissipative,  // restitution below 1 and/or the TC model, periodic box
+  WallsElastic,         // an elastic gas in a walled box
+  WallsDissipative,     // restitution below 1 (pairs or walls) and/or the TC model, walled box
+  WallsGravity,         // gravity, elastic or not (walls only); computes any walled run
+};
+const char* to_string(EngineKind kind);  // "walls, dissipative", ...
+// The engine a run needs: the one with the fewest effects compiled in that computes it.
+EngineKind engine_kind_for(const EngineOptions& options);
+// Whether engine `kind` computes the run `options` describes (the boundary matches, gravity only in
+// WallsGravity, restitution below 1 or TC not in an elastic engine).
+bool engine_can_run(EngineKind kind, const EngineOptions& options);
+
 // A new engine for `initial`; with `resume`, the engine continues from that rebuild point instead, and
 // produces exactly the events the original run produced after it.
 template <class T>
 Result<std::unique_ptr<EngineApi<T>>> make_engine(const InitialState& initial, const EngineOptions& options,
                                                   const ResumePoint<T>* resume = nullptr);
+// The same with the engine named instead of chosen, e.g. WallsGravity for a walled run without gravity:
+// what ede-bench effects compares a specialized engine with. An error if it cannot compute the run.
+template <class T>
+Result<std::unique_ptr<EngineApi<T>>> make_engine_as(EngineKind kind, const InitialState& initial,
+                                                     const EngineOptions& options,
+                                                     const ResumePoint<T>* resume = nullptr);
 
 
 }  // namespace ede

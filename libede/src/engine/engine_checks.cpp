@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "setup/setup.hpp"
-#include "engine/engine_factory.hpp"
+#include "engine/engine_checks.hpp"
 
 namespace ede {
 

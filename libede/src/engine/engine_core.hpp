@@ -1,4 +1,5 @@
-// Engine<T, Boundary, Dissipation>: the event-driven hard-disk engine, one instantiation per effect set.
+// Engine<T, Boundary, Dissipation, Field, Contact>: the event-driven hard-disk engine, one instantiation per
+// effect set (effects.hpp; the instantiations that exist: engine_factory.hpp).
 //
 // The loop: take the earliest of (next disk event, next sample, next action, stop time); for a disk event,
 // discard it if its partner changed since it was predicted (collision counters), else bring the disks
@@ -50,10 +51,8 @@ GridShape engine_grid_for(const InitialState& init, bool periodic, Algorithm alg
 
 template <class T, class Boundary, class Dissipation, class Field = NoField, class Contact = StableContact>
 class Engine final : public EngineApi<T> {
-  static constexpr bool kTextbook = Contact::kTextbook;
   static constexpr bool kPeriodic = Boundary::kPeriodic;
-  static constexpr bool kInelastic = Dissipation::kInelastic;
-  static constexpr bool kTc = Dissipation::kTc;
+  static constexpr bool kDissipative = Dissipation::kDissipative;
   static constexpr bool kGravity = Field::kGravity;
 
   // One disk's current prediction: its earliest collision (pair or wall) and its cell crossing, kept
@@ -69,14 +68,14 @@ class Engine final : public EngineApi<T> {
 
  public:
   Engine(const InitialState& init, const EngineOptions& options, GridShape shape, const ResumePoint<T>* resume)
-      : opt_(options) {
+      : opt_(options), tc_model_(kDissipative && uses_tc_model(options.physics)) {
     load(init);
     lx_ = T(init.lx);
     ly_ = T(init.ly);
     half_lx_ = lx_ / 2;
     half_ly_ = ly_ / 2;
     tc_ = T(options.physics.tc);
-    if constexpr (kInelastic) setup_restitution(init.species_names, options.physics);
+    if constexpr (kDissipative) setup_restitution(init.species_names, options.physics);
     if constexpr (kGravity) {
       gx_ = p_.gx = T(options.physics.gravity[0]);
       gy_ = p_.gy = T(options.physics.gravity[1]);
@@ -103,19 +102,19 @@ class Engine final : public EngineApi<T> {
   std::string effects() const override {
     std::ostringstream s;
     s << Boundary::kName << ", ";
-    if constexpr (kInelastic) {
+    if (kDissipative && !opt_.physics.elastic()) {
       s << "inelastic (xi=" << opt_.physics.restitution;
       if (!opt_.physics.pairs.empty()) s << ", " << opt_.physics.pairs.size() << " species pairs apart";
       s << ", xi_w=" << opt_.physics.wall_restitution;
       for (int w = 0; w < 4; ++w)
         if (opt_.physics.walls[std::size_t(w)]) s << ", " << kWallName[w] << " " << *opt_.physics.walls[std::size_t(w)];
       s << ")";
-      if constexpr (kTc) s << ", TC (tc=" << opt_.physics.tc << ")";
+      if (tc_model()) s << ", TC (tc=" << opt_.physics.tc << ")";
     } else {
       s << "elastic";
     }
     if constexpr (kGravity) s << ", gravity (" << opt_.physics.gravity[0] << ", " << opt_.physics.gravity[1] << ")";
-    if constexpr (kTextbook) s << ", textbook contact root";
+    s << Contact::kLabel;
     s << ", grid " << grid_.nx() << "x" << grid_.ny();
     if (!big_.empty()) s << " + " << big_.size() << (big_.size() == 1 ? " big disk" : " big disks");
     return s.str();
@@ -228,7 +227,7 @@ class Engine final : public EngineApi<T> {
     p_.disk.resize(n);
     p_.mass.resize(n);
     p_.species = init.species;
-    if constexpr (kTc) p_.last_collision.assign(n, -scalar_limits<T>::infinity());
+    if (tc_model()) p_.last_collision.assign(n, -scalar_limits<T>::infinity());
     for (std::size_t i = 0; i < n; ++i) {
       p_.disk[i] = Disk<T>{T(init.x[i]), T(init.y[i]), T(init.vx[i]), T(init.vy[i]), T(0), T(init.radius[i]),
                            -1, 0, -1, -1};
@@ -248,7 +247,7 @@ class Engine final : public EngineApi<T> {
       d.x = from.x, d.y = from.y, d.vx = from.vx, d.vy = from.vy, d.t = from.t;
       d.last_partner = from.last_partner;
     }
-    if constexpr (kTc) p_.last_collision = r.last_collision;
+    if (tc_model()) p_.last_collision = r.last_collision;
     now_ = r.time;
     counts_ = r.counts;
     next_sample_index_ = r.next_sample_index;
@@ -278,7 +277,7 @@ class Engine final : public EngineApi<T> {
         grid_.insert(std::int32_t(i), cell);
     }
     for (std::size_t i = 0; i < p_.size(); ++i) predict(std::int32_t(i));
-    if constexpr (kInelastic) ke_ = kinetic_energy(p_);
+    if constexpr (kDissipative) ke_ = kinetic_energy(p_);
     if (!notify) return;
     const RebuildPoint<T> point{now_, p_, counts_, next_sample_index_, next_action_index_, same_time_events_, ke0_};
     for (Sink<T>* s : sinks_) s->on_rebuild(point);
@@ -357,11 +356,11 @@ class Engine final : public EngineApi<T> {
   T pair_time(const Disk<T>& di, Position2<T> pi, Position2<T> vi, const Disk<T>& dk, T sx, T sy) const {
     if constexpr (kGravity) {
       const Position2<T> pk = pos_at(dk), vk = vel_at(dk);
-      return now_ + contact_time<kTextbook>((pk.x + sx) - pi.x, (pk.y + sy) - pi.y, vk.x - vi.x, vk.y - vi.y,
-                                            di.r + dk.r, b_noise2_);
+      return now_ + Contact::time((pk.x + sx) - pi.x, (pk.y + sy) - pi.y, vk.x - vi.x, vk.y - vi.y, di.r + dk.r,
+                                  b_noise2_);
     } else {
       (void)vi;
-      return predict_pair<kTextbook>(di, pi, dk, sx, sy, now_, b_noise2_);
+      return predict_pair<Contact>(di, pi, dk, sx, sy, now_, b_noise2_);
     }
   }
 
@@ -532,14 +531,14 @@ class Engine final : public EngineApi<T> {
       advance_disk(p_.disk[i], now_);
   }
 
-  // Within t_c of either disk's previous collision the TC model makes a collision elastic.
+  // The TC model is on for a dissipative scene with tc > 0 (uses_tc_model): a compile-time false in the
+  // Elastic engine, a value in the Dissipative one. Within t_c of either disk's previous collision it makes
+  // a collision elastic.
+  bool tc_model() const { return kDissipative && tc_model_; }
   bool tc_elastic(std::int32_t i, std::int32_t j) const {
-    if constexpr (!kTc) {
-      return false;
-    } else {
-      if (now_ - p_.last_collision[i] < tc_) return true;
-      return j >= 0 && now_ - p_.last_collision[j] < tc_;
-    }
+    if (!tc_model()) return false;
+    if (now_ - p_.last_collision[i] < tc_) return true;
+    return j >= 0 && now_ - p_.last_collision[j] < tc_;
   }
 
   // The pair is resolved in the order (lower id, higher id) whichever disk owned the prediction, so the
@@ -557,17 +556,16 @@ class Engine final : public EngineApi<T> {
       if (dy > half_ly_) dy -= ly_; else if (dy < -half_ly_) dy += ly_;
     }
     const bool by_tc = tc_elastic(i, j);
-    double ke_before = 0;
-    if constexpr (kInelastic) ke_before = pair_energy(i, j);
-    T one_plus_xi = T(2);
-    if constexpr (kInelastic) one_plus_xi = by_tc ? T(2) : pair_one_plus_xi(i, j);
-    collide_pair(dx, dy, p_.mass[i], p_.mass[j], one_plus_xi, a.vx, a.vy, b.vx, b.vy);
-    if constexpr (kInelastic) {
+    if constexpr (kDissipative) {
+      const double ke_before = pair_energy(i, j);
+      collide_pair(dx, dy, p_.mass[i], p_.mass[j], by_tc ? T(2) : pair_one_plus_xi(i, j), a.vx, a.vy, b.vx, b.vy);
       ke_ += pair_energy(i, j) - ke_before;
       note_if_too_slow(i);
       note_if_too_slow(j);
+      if (tc_model()) p_.last_collision[i] = p_.last_collision[j] = now_;
+    } else {
+      collide_pair(dx, dy, p_.mass[i], p_.mass[j], T(2), a.vx, a.vy, b.vx, b.vy);
     }
-    if constexpr (kTc) p_.last_collision[i] = p_.last_collision[j] = now_;
     ++a.counter;
     ++b.counter;
     a.last_partner = j;
@@ -585,19 +583,18 @@ class Engine final : public EngineApi<T> {
     const T vx0 = d.vx, vy0 = d.vy;
     const bool vertical = wall == kWallLeft || wall == kWallRight;
     const bool by_tc = tc_elastic(i, -1);
-    double ke_before = 0;
-    if constexpr (kInelastic) ke_before = disk_energy(i);
-    if constexpr (kInelastic) {
+    if constexpr (kDissipative) {
+      const double ke_before = disk_energy(i);
       if (by_tc)
         collide_wall_elastic(vertical, d.vx, d.vy);
       else
         collide_wall(vertical, xi_wall_[wall], d.vx, d.vy);
       ke_ += disk_energy(i) - ke_before;
       note_if_too_slow(i);
+      if (tc_model()) p_.last_collision[i] = now_;
     } else {
       collide_wall_elastic(vertical, d.vx, d.vy);
     }
-    if constexpr (kTc) p_.last_collision[i] = now_;
     ++d.counter;
     d.last_partner = -1;
     ++counts_.by_kind[int(EventKind::Wall)];
@@ -733,7 +730,7 @@ class Engine final : public EngineApi<T> {
       if constexpr (kGravity)
         m << "Under gravity, disks settling on the floor or on each other bounce ever lower and ever faster: "
              "resting contact is not a state an event-driven run can reach. ";
-      if constexpr (kTc)
+      if (tc_model())
         m << "Increase physics.tc (now " << opt_.physics.tc << ")"
           << (kGravity ? " so that settled disks keep hopping elastically at a height of about g tc^2 / 8, and keep "
                          "wall_restitution above 0."
@@ -743,7 +740,7 @@ class Engine final : public EngineApi<T> {
       stall_message_ = m.str();
       return RunStatus::Stalled;
     }
-    if constexpr (kInelastic)
+    if constexpr (kDissipative)
       if (too_slow_ >= 0) {
         const Disk<T>& slow = p_.disk[too_slow_];  // its velocity is the one it left the collision with
         std::ostringstream m;
@@ -760,7 +757,7 @@ class Engine final : public EngineApi<T> {
     if (opt_.stop.events && counts_.events() >= *opt_.stop.events) return RunStatus::ReachedEvents;
     if (opt_.stop.collisions_per_particle && counts_.of(EventKind::Pair) >= pairs_to_stop_)
       return RunStatus::ReachedCollisions;
-    if constexpr (kInelastic)
+    if constexpr (kDissipative)
       if (opt_.stop.energy_fraction && ke_ <= *opt_.stop.energy_fraction * ke0_) return RunStatus::ReachedEnergy;
     return RunStatus::Running;
   }
@@ -809,6 +806,7 @@ class Engine final : public EngineApi<T> {
 
   T lx_ = 1, ly_ = 1, half_lx_ = 0.5, half_ly_ = 0.5;
   T one_plus_xi_ = 2, tc_ = 0;
+  bool tc_model_ = false;  // Dissipative only: read through tc_model()
   T xi_wall_[4] = {1, 1, 1, 1};
   std::vector<T> pair_table_;  // 1 + xi for species (a, b) at a * species_count_ + b
   std::size_t species_count_ = 1;

@@ -1,4 +1,5 @@
-// Names of enums for messages and summaries, and the scene -> engine options mapping.
+// Names of enums for messages and summaries, the scene -> engine options mapping, and which engine of the
+// table (engine_factory.hpp) a run needs.
 #include "engine/engine.hpp"
 #include "core/event.hpp"
 
@@ -33,6 +34,37 @@ const char* to_string(RunStatus s) {
 }
 
 bool is_finished(RunStatus s) { return s != RunStatus::Running; }
+
+const char* to_string(EngineKind k) {
+  switch (k) {
+    case EngineKind::PeriodicElastic: return "periodic, elastic";
+    case EngineKind::PeriodicDissipative: return "periodic, dissipative";
+    case EngineKind::WallsElastic: return "walls, elastic";
+    case EngineKind::WallsDissipative: return "walls, dissipative";
+    case EngineKind::WallsGravity: return "walls, gravity";
+  }
+  return "?";
+}
+
+EngineKind engine_kind_for(const EngineOptions& o) {
+  const bool elastic = o.physics.elastic();
+  if (o.boundary == BoundaryKind::Periodic) return elastic ? EngineKind::PeriodicElastic : EngineKind::PeriodicDissipative;
+  if (o.physics.has_gravity()) return EngineKind::WallsGravity;
+  return elastic ? EngineKind::WallsElastic : EngineKind::WallsDissipative;
+}
+
+bool engine_can_run(EngineKind k, const EngineOptions& o) {
+  const bool periodic = o.boundary == BoundaryKind::Periodic, gravity = o.physics.has_gravity();
+  const bool elastic = o.physics.elastic();
+  switch (k) {
+    case EngineKind::PeriodicElastic: return periodic && !gravity && elastic;
+    case EngineKind::PeriodicDissipative: return periodic && !gravity;
+    case EngineKind::WallsElastic: return !periodic && !gravity && elastic;
+    case EngineKind::WallsDissipative: return !periodic && !gravity;
+    case EngineKind::WallsGravity: return !periodic;
+  }
+  return false;
+}
 
 std::uint64_t auto_rebuild_interval(std::size_t disks) {
   return std::max<std::uint64_t>(std::uint64_t(1) << 20, 16 * std::uint64_t(disks));

@@ -5,8 +5,9 @@
 #pragma once
 
 #include "core/drift.hpp"
-#include "core/particles.hpp"
 #include "core/geometry.hpp"
+#include "core/particles.hpp"
+#include "engine/effects.hpp"
 
 namespace ede {
 
@@ -20,22 +21,14 @@ inline Position2<T> position_at(const Disk<T>& d, T t) {
   return {drift(d.x, d.vx, d.t, t), drift(d.y, d.vy, d.t, t)};
 }
 
-// Time until contact by the stable root, or by the textbook one (accuracy study only).
-template <bool kTextbook, class T>
-inline T contact_time(T dx, T dy, T dvx, T dvy, T s, T b_noise2) {
-  if constexpr (kTextbook)
-    return pair_contact_time_textbook(dx, dy, dvx, dvy, s, b_noise2);
-  else
-    return pair_contact_time(dx, dy, dvx, dvy, s, b_noise2);
-}
-
-// Absolute time at which disks i (at pi, now) and j touch, or kNever. b_noise2: see geometry.hpp.
-template <bool kTextbook = false, class T>
+// Absolute time at which disks i (at pi, now) and j touch, or kNever, by Contact's root (effects.hpp).
+// b_noise2: see geometry.hpp.
+template <class Contact = StableContact, class T>
 inline T predict_pair(const Disk<T>& di, Position2<T> pi, const Disk<T>& dj, T shift_x, T shift_y, T now,
                       T b_noise2) {
   const Position2<T> pj = position_at(dj, now);
-  const T dt = contact_time<kTextbook>((pj.x + shift_x) - pi.x, (pj.y + shift_y) - pi.y, dj.vx - di.vx,
-                                       dj.vy - di.vy, di.r + dj.r, b_noise2);
+  const T dt = Contact::time((pj.x + shift_x) - pi.x, (pj.y + shift_y) - pi.y, dj.vx - di.vx, dj.vy - di.vy,
+                             di.r + dj.r, b_noise2);
   return now + dt;
 }
 

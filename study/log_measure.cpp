@@ -1,10 +1,10 @@
-// The pieces of log measurement shared by ede-bench log and ede-bench accuracy; see log_measure.hpp.
+// The pieces of log measurement shared by the log benchmark and the accuracy study; see log_measure.hpp.
 //
 // Every timed measurement runs in its own child process (run_in_child: a clean heap, and the log writer's
 // second thread is the child's own, so getrusage(RUSAGE_SELF) in the child is the CPU time of exactly
 // one run's two threads). Log sizes do not depend on timing (the writer's bytes are a function of the
 // events); the caller reads the log afterwards and deletes it.
-#include "log_measure.hpp"
+#include "study/log_measure.hpp"
 
 #include <sys/resource.h>
 
@@ -14,15 +14,15 @@
 #include <memory>
 #include <sstream>
 
-#include "bench_common.hpp"
-#include "cpu_cycles.hpp"
+#include "study/measurement.hpp"
+#include "study/cpu_cycles.hpp"
 #include "log/log_reader.hpp"
 #include "replay/replay.hpp"
 #include "ede/scene.hpp"
 #include "setup/setup.hpp"
 #include "core/scalar_dispatch.hpp"
 
-namespace ede::bench {
+namespace ede::study {
 
 std::string power_of_two(std::uint64_t v) {
   if (v == 0) return "auto";  // LogSettings: 0 is the automatic keyframe interval
@@ -50,7 +50,7 @@ namespace {
 template <class T>
 int timed_run(const RunConfig& c, const Scene& scene, const InitialState& initial, const EngineOptions& options,
               std::string& out) {
-  auto made = make_engine<T>(initial, options);
+  auto made = make_study_engine<T>(initial, options, c.variant);
   if (!made) return out = made.error().message, 1;
   EngineApi<T>& engine = *made.value();
   std::unique_ptr<LogWriter<T>> log;
@@ -60,7 +60,7 @@ int timed_run(const RunConfig& c, const Scene& scene, const InitialState& initia
     log = std::move(w).value();
     engine.add_sink(log.get());
   }
-  tools::CpuCycles cycles;
+  CpuCycles cycles;
   const CpuTimes cpu0 = cpu_times();
   cycles.start();
   const auto start = std::chrono::steady_clock::now();
@@ -81,15 +81,13 @@ int timed_run(const RunConfig& c, const Scene& scene, const InitialState& initia
 }
 
 int run_child(const RunConfig& c, std::string& out) {
-  std::vector<Override> overrides;
-  if (c.events) overrides.push_back({"stop.events=" + std::to_string(c.events)});
-  for (const std::string& s : c.overrides) overrides.push_back({s});
+  std::vector<Override> overrides = as_overrides(c.overrides);
+  if (c.events) overrides.push_back({"stop.events=" + std::to_string(c.events)});  // after them: it wins
   auto scene = load_scene_file(c.scene, overrides);
   if (!scene) return out = scene.error().message, 1;
   auto initial = build_initial_state(scene.value());
   if (!initial) return out = initial.error().message, 1;
-  EngineOptions options = engine_options_from(scene.value(), initial.value().size());
-  options.contact = c.contact;
+  const EngineOptions options = engine_options_from(scene.value(), initial.value().size());
   if (scene.value().scalar == ScalarKind::Float128)
     return out = c.scene + ": float128 runs write no event log (the log format holds float, double and long "
                            "double); benchmark them with ede-bench speed",
@@ -244,4 +242,4 @@ SeekRow seek_row(const RunConfig& build, const std::string& label, std::uint64_t
   return row;
 }
 
-}  // namespace ede::bench
+}  // namespace ede::study

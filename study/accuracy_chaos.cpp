@@ -1,4 +1,4 @@
-// ede-bench accuracy, the chaos part: round-off amplified by the dynamics, per setting and scene.
+// The accuracy study, the chaos part: round-off amplified by the dynamics, per setting and scene.
 //
 // Time reversal: a probe run finds the time t_c at which the disks have had c collisions each (stop at c
 // collisions per particle); a second run from the same start reverses every velocity at t_c
@@ -18,10 +18,10 @@
 #include <cstdio>
 #include <sstream>
 
-#include "accuracy_parts.hpp"
-#include "bench_common.hpp"
+#include "study/accuracy_parts.hpp"
+#include "study/measurement.hpp"
 
-namespace ede::bench {
+namespace ede::study {
 
 namespace {
 
@@ -41,7 +41,7 @@ int reversal_child(const StudyScene& s, const StudyPlan& plan, std::string& out)
     opt.stop = StopSpec{};
     opt.stop.time = 2 * t_rev.value();
     opt.actions = {ActionSpec{t_rev.value(), ActionKind::ReverseVelocities}};
-    auto made = make_engine<T>(s.initial, opt);
+    auto made = s.engine<T>(opt);
     if (!made) return out = made.error().message, 1;
     EngineApi<T>& e = *made.value();
     const std::vector<Disk<T>> start = e.particles().disk;
@@ -100,15 +100,15 @@ int divergence_child(const StudyScene& s, const StudyPlan& plan, std::string& ou
   opt.stop = StopSpec{};
   opt.stop.time = 4 * tau * plan.divergence_cap;  // a bound only: the loop stops at divergence_cap
   opt.sample_interval = tau * plan.divergence_step;
-  auto probe = make_engine<T>(s.initial, opt);
+  auto probe = s.engine<T>(opt);
   if (!probe) return out = probe.error().message, 1;
   ResumePoint<T> ra;
   ra.disks = probe.value()->particles().disk;
   ResumePoint<T> rb = ra;
   Disk<T>& moved = rb.disks[rb.disks.size() / 2];
   moved.x = one_ulp_up(moved.x);
-  auto a = make_engine<T>(s.initial, opt, &ra);
-  auto b = make_engine<T>(s.initial, opt, &rb);
+  auto a = s.engine<T>(opt, &ra);
+  auto b = s.engine<T>(opt, &rb);
   if (!a || !b) return out = (a ? b.error() : a.error()).message, 1;
   const double n = double(s.initial.size()), path = rms_speed(s.initial) * tau;
   double by_path = -1, by_diameter = -1;
@@ -155,4 +155,4 @@ void measure_chaos(const StudyPlan& plan, EngineRow& row) {
                fmt(row.divergence_path).c_str(), fmt(row.divergence_diameter).c_str());
 }
 
-}  // namespace ede::bench
+}  // namespace ede::study

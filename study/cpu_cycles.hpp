@@ -7,7 +7,7 @@
 
 #include <cstdint>
 
-namespace ede::tools {
+namespace ede::study {
 
 class CpuCycles {
  public:
@@ -24,4 +24,4 @@ class CpuCycles {
   int fd_ = -1;
 };
 
-}  // namespace ede::tools
+}  // namespace ede::study

@@ -1,5 +1,5 @@
 // CpuCycles through perf_event_open(2); see cpu_cycles.hpp.
-#include "cpu_cycles.hpp"
+#include "study/cpu_cycles.hpp"
 
 #include <linux/perf_event.h>
 #include <sys/ioctl.h>
@@ -8,7 +8,7 @@
 
 #include <cstring>
 
-namespace ede::tools {
+namespace ede::study {
 
 CpuCycles::CpuCycles() {
   perf_event_attr attr;
@@ -40,4 +40,4 @@ std::uint64_t CpuCycles::stop() {
   return count;
 }
 
-}  // namespace ede::tools
+}  // namespace ede::study

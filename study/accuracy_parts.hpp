@@ -1,25 +1,27 @@
-// The parts of ede-bench accuracy and the rows they produce; accuracy.cpp runs them, accuracy_report.cpp
-// prints them. Each part measures in child processes (run_child_measurement), one file per part:
+// The parts of the accuracy study (ede-bench accuracy) and the rows they produce; accuracy.cpp runs them,
+// ede-bench's accuracy_report.cpp prints them. Each part measures in child processes (run_child_measurement), one file per part:
 //   accuracy_engine.cpp        per setting and scene: ns/event, energy drift, largest overlap, log bytes/event
 //   accuracy_chaos.cpp         per setting and scene: time reversal, divergence of runs one ulp apart
 //   accuracy_time_stepped.cpp  a time-stepped simulation at several dt against the event-driven engine
 //   accuracy_log.cpp           the log off, on, and its keyframe interval: time, bytes, seek time
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
 
-#include "accuracy_settings.hpp"
-#include "bench_common.hpp"
+#include "study/accuracy_settings.hpp"
+#include "study/measurement.hpp"
 
-namespace ede::bench {
+namespace ede::study {
 
-// What the whole study runs; accuracy.cpp fills it from the command line (full or --quick).
+// What the whole study runs; ede-bench fills it from the command line (full, or quick_plan for --quick).
 struct StudyPlan {
   std::string scenes_dir;                // examples/accuracy
-  std::uint64_t events = 10000000;       // engine events of each error run (drift, overlap)
-  std::uint64_t timing_events = 2000000; // engine events of each timed run (ns/event); <= events
+  std::vector<std::string> overrides;    // --set key=value, applied to every scene the study loads
+  // The error runs (drift, overlap) and the logs of the log part run each scene's own stop.events.
+  std::uint64_t timing_events = 2000000; // engine events of each timed run (ns/event); at most stop.events
   int repeat = 3;                        // timed runs per measurement; medians are reported
   int checkpoints = 100;                 // energy and snapshot-overlap checks along each error run
   std::vector<double> reversal_collisions = {5, 10, 20};  // collisions per disk before reversing
@@ -30,10 +32,18 @@ struct StudyPlan {
   std::vector<double> ts_dt_fractions = {1, 0.3, 0.1, 0.03, 0.01};  // dt in mean free times
   int cooling_points = 20;               // times at which the cooling curves are compared
   std::vector<std::uint64_t> keyframe_intervals = {1u << 14, 1u << 16, 1u << 18, 1u << 20, 1u << 22};
-  std::uint64_t log_events = 10000000;   // engine events of the keyframe-interval logs
   std::string tmp_dir;                   // where the logs go (deleted as soon as read)
 
   std::string scene(const std::string& name) const { return scenes_dir + "/" + name + ".toml"; }
+  // The scene `name` with the setting and the plan's overrides (and `more`) applied.
+  Result<StudyScene> load(const std::string& name, const Setting& setting, std::vector<std::string> more = {}) const {
+    std::vector<std::string> all = overrides;
+    all.insert(all.end(), more.begin(), more.end());
+    return load_study_scene(scene(name), setting, std::move(all));
+  }
+  // Engine events of a long run of `s` (its stop.events) and of a timed run (timing_events, at most that).
+  static std::uint64_t long_events(const StudyScene& s) { return s.scene.stop.events.value_or(0); }
+  std::uint64_t timed_events(const StudyScene& s) const { return std::min(timing_events, long_events(s)); }
 };
 
 // The scenes of the engine measurements (examples/accuracy/NAME.toml).
@@ -45,7 +55,7 @@ struct EngineRow {
   Setting setting;
   std::string scene;
   std::string failure;
-  double disks = 0, events = 0, collisions = 0;
+  double disks = 0, events = 0, collisions = 0, timing_events = 0;
   double ns_per_event = 0;                 // median over the timed runs of the event loop's wall time / events
   std::vector<double> ns_runs;             // each timed run's ns/event
   double drift = 0, drift_max = 0;         // |E - E0| / E0 at the end, largest at the checkpoints
@@ -67,7 +77,7 @@ struct EngineRow {
 template <class Body>
 ChildMeasurement in_child(const StudyPlan& plan, const EngineRow& row, Body body) {
   return run_child_measurement([&](std::string& out) {
-    auto s = load_study_scene(plan.scene(row.scene), row.setting);
+    auto s = plan.load(row.scene, row.setting);
     if (!s) return out = s.error().message, 1;
     return with_precision(row.setting.precision,
                           [&]<class T>() { return body.template operator()<T>(s.value(), out); });
@@ -126,4 +136,4 @@ struct LogRow {
 
 std::vector<LogRow> measure_log(const StudyPlan& plan);
 
-}  // namespace ede::bench
+}  // namespace ede::study

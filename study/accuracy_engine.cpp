@@ -1,14 +1,14 @@
-// ede-bench accuracy, the engine part: for one setting on one scene, the errors a long elastic run leaves
+// The accuracy study, the engine part: for one setting on one scene, the errors a long elastic run leaves
 // (energy drift, largest overlap) and the cost (ns per event); then the log's bytes per event for that
 // scalar type.
 //
 // Errors and cost come from different runs, each in its own child:
-//   the error run: plan.events engine events (10^7) in plan.checkpoints slices, untimed. A sink looks at
+//   the error run: the scene's stop.events engine events (10^7) in plan.checkpoints slices, untimed. A sink looks at
 //     every pair collision: how far inside each other the two disks are at the moment they collide, the
 //     largest overlap the run ever produces (exact arithmetic: 0). Between slices the energy, summed in a
 //     type wider than the run's (Wide<T>), is compared with the initial one, and EngineApi::
 //     largest_overlap() (every near pair at that instant) is read.
-//   timed runs: plan.timing_events events in one run() call, no sink, nothing else timed. accuracy.cpp
+//   timed runs: timing_events events (at most stop.events) in one run() call, no sink, nothing else timed. accuracy.cpp
 //     interleaves them over all settings (round after round), so that a slow spell of the shared machine
 //     hits every setting alike; ns/event is the median. Each reports the drift at its end, which must
 //     equal the error run's at the same event (repeats_agree: the runs are deterministic).
@@ -23,11 +23,11 @@
 #include <filesystem>
 #include <sstream>
 
-#include "accuracy_parts.hpp"
-#include "bench_common.hpp"
-#include "log_measure.hpp"
+#include "study/accuracy_parts.hpp"
+#include "study/measurement.hpp"
+#include "study/log_measure.hpp"
 
-namespace ede::bench {
+namespace ede::study {
 
 namespace {
 
@@ -58,50 +58,54 @@ class ContactOverlap final : public Sink<T> {
 
 template <class T>
 int error_child(const StudyScene& s, const StudyPlan& plan, std::string& out) {
+  const std::uint64_t events = StudyPlan::long_events(s), timing_events = plan.timed_events(s);
+  if (events == 0) return out = "the study runs each scene for its stop.events: set it (--set stop.events=N)", 1;
   EngineOptions options = s.options;
   options.stop = StopSpec{};
-  options.stop.events = plan.events;
-  auto made = make_engine<T>(s.initial, options);
+  options.stop.events = events;
+  auto made = s.engine<T>(options);
   if (!made) return out = made.error().message, 1;
   EngineApi<T>& engine = *made.value();
   ContactOverlap<T> contact(T(s.initial.lx), T(s.initial.ly), s.options.boundary == BoundaryKind::Periodic);
   engine.add_sink(&contact);
   const auto e0 = kinetic_energy_wide(engine.particles());
-  const std::uint64_t slice = std::max<std::uint64_t>(1, plan.events / std::uint64_t(plan.checkpoints));
+  const std::uint64_t slice = std::max<std::uint64_t>(1, events / std::uint64_t(plan.checkpoints));
   double drift = 0, drift_max = 0, snapshot = 0, drift_at_timing = -1;
   RunStatus status = RunStatus::Running;
-  while (status == RunStatus::Running && engine.counts().events() < plan.events) {
+  while (status == RunStatus::Running && engine.counts().events() < events) {
     const std::uint64_t done = engine.counts().events();
     // Slices end at the timed runs' length too, where their drift is compared with this run's.
-    std::uint64_t next = std::min(done + slice, plan.events);
-    if (done < plan.timing_events) next = std::min(next, plan.timing_events);
+    std::uint64_t next = std::min(done + slice, events);
+    if (done < timing_events) next = std::min(next, timing_events);
     status = engine.run(next - done);
     drift = relative_change(kinetic_energy_wide(engine.particles()), e0);
     drift_max = std::max(drift_max, drift);
     snapshot = std::max(snapshot, engine.largest_overlap());
-    if (engine.counts().events() == plan.timing_events) drift_at_timing = drift;
+    if (engine.counts().events() == timing_events) drift_at_timing = drift;
   }
   if (status == RunStatus::Stalled) return out = engine.stall_message(), 1;
   std::ostringstream o;
   o.precision(17);
   o << "disks=" << s.initial.size() << " events=" << engine.counts().events()
     << " collisions=" << engine.counts().collisions() << " drift=" << drift << " drift_max=" << drift_max
-    << " overlap=" << contact.largest << " overlap_snapshot=" << snapshot << " drift_at_timing=" << drift_at_timing;
+    << " overlap=" << contact.largest << " overlap_snapshot=" << snapshot << " drift_at_timing=" << drift_at_timing
+    << " timing_events=" << timing_events;
   out = o.str();
   return 0;
 }
 
 template <class T>
 int timed_child(const StudyScene& s, const StudyPlan& plan, std::string& out) {
+  const std::uint64_t events = plan.timed_events(s);
   EngineOptions options = s.options;
   options.stop = StopSpec{};
-  options.stop.events = plan.timing_events;
-  auto made = make_engine<T>(s.initial, options);
+  options.stop.events = events;
+  auto made = s.engine<T>(options);
   if (!made) return out = made.error().message, 1;
   EngineApi<T>& engine = *made.value();
   const auto e0 = kinetic_energy_wide(engine.particles());
   const auto t0 = std::chrono::steady_clock::now();
-  const RunStatus status = engine.run(plan.timing_events);
+  const RunStatus status = engine.run(events);
   const double seconds = seconds_since(t0);
   if (status == RunStatus::Stalled) return out = engine.stall_message(), 1;
   std::ostringstream o;
@@ -117,9 +121,10 @@ void measure_log_bytes(const StudyPlan& plan, EngineRow& row) {
   RunConfig c;
   c.label = row.scene + "-" + precision_name(row.setting.precision);
   c.scene = plan.scene(row.scene);
-  c.events = std::min(plan.events, kLogBytesEvents);
+  c.events = std::min(std::uint64_t(row.events), kLogBytesEvents);
+  c.overrides = plan.overrides;
   c.overrides.push_back(scalar_override(row.setting.precision));
-  c.contact = row.setting.contact;
+  c.variant.contact = row.setting.contact;
   c.log = true;
   c.log_path = plan.tmp_dir + "/accuracy-" + std::to_string(::getpid()) + ".ede";
   const RunResult r = run_measured(c);
@@ -147,7 +152,7 @@ void measure_engine_errors(const StudyPlan& plan, EngineRow& row) {
   row.disks = get(kv, "disks"), row.events = get(kv, "events"), row.collisions = get(kv, "collisions");
   row.drift = get(kv, "drift"), row.drift_max = get(kv, "drift_max");
   row.overlap = get(kv, "overlap"), row.overlap_snapshot = get(kv, "overlap_snapshot");
-  row.drift_at_timing = get(kv, "drift_at_timing");
+  row.drift_at_timing = get(kv, "drift_at_timing"), row.timing_events = get(kv, "timing_events");
   std::fprintf(stderr, "  %-8s %-26s %.3g events: drift %.3g, overlap %.3g\n", row.scene.c_str(),
                row.setting.label().c_str(), row.events, row.drift, row.overlap);
   measure_log_bytes(plan, row);
@@ -164,10 +169,10 @@ void measure_engine_time(const StudyPlan& plan, EngineRow& row) {
   const double events = get(m.values, "events");
   row.ns_runs.push_back(1e9 * get(m.values, "seconds") / std::max(1.0, events));
   row.ns_per_event = median(row.ns_runs);
-  if (get(m.values, "drift") != row.drift_at_timing || events != double(plan.timing_events))
+  if (get(m.values, "drift") != row.drift_at_timing || events != row.timing_events)
     row.repeats_agree = false;
   std::fprintf(stderr, "  %-8s %-26s timed run %zu: %.0f ns/event\n", row.scene.c_str(), row.setting.label().c_str(),
                row.ns_runs.size(), row.ns_runs.back());
 }
 
-}  // namespace ede::bench
+}  // namespace ede::study

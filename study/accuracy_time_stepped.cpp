@@ -1,4 +1,4 @@
-// ede-bench accuracy, the time-stepped part: what the event-driven approach avoids. A time-stepped
+// The accuracy study, the time-stepped part: what the event-driven approach avoids. A time-stepped
 // simulation (ede::TimeStepped: move by v dt, resolve the overlapping pairs found) of the same scene at
 // several dt, against the event-driven engine (double, stable root) from the same initial state:
 //   elastic gas (accuracy/gas): the pair collision rate over ts_collisions mean free times, error
@@ -21,13 +21,13 @@
 #include <cstdio>
 #include <sstream>
 
-#include "accuracy_parts.hpp"
-#include "bench_common.hpp"
-#include "log_measure.hpp"
+#include "study/accuracy_parts.hpp"
+#include "study/measurement.hpp"
+#include "study/log_measure.hpp"
 
 #include "study/time_stepped.hpp"
 
-namespace ede::bench {
+namespace ede::study {
 
 namespace {
 
@@ -59,7 +59,7 @@ int event_driven_child(const StudyScene& s, double span, int samples, std::strin
   opt.stop = StopSpec{};
   opt.sample_interval = span / samples;
   opt.stop.time = double(samples) * *opt.sample_interval;  // the engine's own expression for the last sample
-  auto made = make_engine<double>(s.initial, opt);
+  auto made = s.engine<double>(opt);
   if (!made) return out = made.error().message, 1;
   Recorder rec(*made.value());
   made.value()->add_sink(&rec);
@@ -110,7 +110,7 @@ ChildMeasurement repeated(const StudyPlan& plan, const std::string& name, Body b
   std::vector<double> cpu;
   for (int k = 0; k < plan.repeat; ++k) {
     ChildMeasurement m = run_child_measurement([&](std::string& out) {
-      auto s = load_study_scene(plan.scene(name), kReference, overrides);
+      auto s = plan.load(name, kReference, overrides);
       if (!s) return out = s.error().message, 1;
       return body(s.value(), out);
     });
@@ -126,7 +126,7 @@ ChildMeasurement repeated(const StudyPlan& plan, const std::string& name, Body b
 // diameter and its rms speed.
 Result<KeyValues> mean_free_time(const StudyPlan& plan, const std::string& name) {
   const ChildMeasurement m = run_child_measurement([&](std::string& out) {
-    auto s = load_study_scene(plan.scene(name), kReference);
+    auto s = plan.load(name, kReference);
     if (!s) return out = s.error().message, 1;
     const Result<double> t = time_at_collisions<double>(s.value(), 2);
     if (!t) return out = t.error().message, 1;
@@ -255,4 +255,4 @@ SteppedStudy measure_time_stepped(const StudyPlan& plan) {
   return st;
 }
 
-}  // namespace ede::bench
+}  // namespace ede::study

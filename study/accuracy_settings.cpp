@@ -1,10 +1,11 @@
 // The accuracy study's settings and scene loading; see accuracy_settings.hpp.
-#include "accuracy_settings.hpp"
+#include "study/accuracy_settings.hpp"
 
 #include "ede/scene.hpp"
 #include "setup/setup.hpp"
+#include "study/measurement.hpp"
 
-namespace ede::bench {
+namespace ede::study {
 
 const char* precision_name(Precision p) {
   switch (p) {
@@ -49,16 +50,14 @@ std::string scalar_override(Precision p) {
 Result<StudyScene> load_study_scene(const std::string& path, const Setting& setting,
                                     std::vector<std::string> overrides) {
   overrides.push_back(scalar_override(setting.precision));
-  std::vector<Override> all;
-  for (std::string& o : overrides) all.push_back(Override{std::move(o)});
-  auto scene = load_scene_file(path, all);
+  auto scene = load_scene_file(path, as_overrides(overrides));
   if (!scene) return scene.error();
   auto initial = build_initial_state(scene.value());
   if (!initial) return initial.error();
-  StudyScene s{std::move(scene).value(), std::move(initial).value(), {}};
+  StudyScene s{std::move(scene).value(), std::move(initial).value(), {}, {}};
   s.options = engine_options_from(s.scene, s.initial.size());
-  s.options.contact = setting.contact;
+  s.variant.contact = setting.contact;
   return s;
 }
 
-}  // namespace ede::bench
+}  // namespace ede::study

@@ -13,12 +13,13 @@
 #include <string>
 #include <vector>
 
-#include "engine/engine.hpp"
 #include "core/particles.hpp"
 #include "ede/error.hpp"
 #include "ede/scene.hpp"
+#include "engine/engine.hpp"
+#include "study/study_engine.hpp"
 
-namespace ede::bench {
+namespace ede::study {
 
 enum class Precision { Float, Double, LongDouble, Float128 };
 
@@ -55,11 +56,18 @@ decltype(auto) with_precision(Precision p, F&& f) {
 // The scene override that records p in a scene ("engine.scalar=float", ..., "engine.scalar=float128").
 std::string scalar_override(Precision p);
 
-// A scene ready to run with a setting: its stop condition is the caller's to set (options.stop).
+// A scene ready to run with a setting: its stop condition is the caller's to set (options.stop); the
+// scene's own stop.events (after overrides) is how long the study's long runs are.
 struct StudyScene {
   Scene scene;
   InitialState initial;
   EngineOptions options;
+  EngineVariant variant;  // the setting's contact root
+
+  template <class T>
+  Result<std::unique_ptr<EngineApi<T>>> engine(const EngineOptions& o, const ResumePoint<T>* resume = nullptr) const {
+    return make_study_engine<T>(initial, o, variant, resume);
+  }
 };
 // Loads `path` with `overrides`, records the setting's scalar type in the scene (a log header names it; a
 // float128 run writes no log) and sets the contact root.
@@ -72,7 +80,7 @@ Result<double> time_at_collisions(const StudyScene& s, double collisions) {
   EngineOptions o = s.options;
   o.stop = StopSpec{};
   o.stop.collisions_per_particle = collisions;
-  auto e = make_engine<T>(s.initial, o);
+  auto e = s.engine<T>(o);
   if (!e) return e.error();
   if (e.value()->run() == RunStatus::Stalled) return Error{e.value()->stall_message()};
   return double(e.value()->time());
@@ -138,4 +146,4 @@ double image_distance(T x, T length, bool periodic) {
   return d;
 }
 
-}  // namespace ede::bench
+}  // namespace ede::study

@@ -1,5 +1,5 @@
 // run_in_child: fork, pipe, wait4; see child_process.hpp.
-#include "child_process.hpp"
+#include "study/child_process.hpp"
 
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -7,7 +7,7 @@
 
 #include <cstring>
 
-namespace ede::tools {
+namespace ede::study {
 
 ChildResult run_in_child(const std::function<int(std::string& output)>& body) {
   ChildResult result;
@@ -50,4 +50,4 @@ ChildResult run_in_child(const std::function<int(std::string& output)>& body) {
   return result;
 }
 
-}  // namespace ede::tools
+}  // namespace ede::study

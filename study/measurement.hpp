@@ -1,5 +1,5 @@
-// What the benchmarks share: running a measurement in a child and reading the key=value text it sends
-// back, medians, and formatting.
+// What the studies and benchmarks share: running a measurement in a child and reading the key=value text
+// it sends back, medians, scene overrides, and formatting.
 #pragma once
 
 #include <algorithm>
@@ -11,9 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "child_process.hpp"
+#include "ede/scene.hpp"
+#include "study/child_process.hpp"
 
-namespace ede::bench {
+namespace ede::study {
 
 using KeyValues = std::map<std::string, double>;
 
@@ -39,7 +40,7 @@ struct ChildMeasurement {
 };
 
 inline ChildMeasurement run_child_measurement(const std::function<int(std::string& output)>& body) {
-  const tools::ChildResult r = tools::run_in_child(body);
+  const ChildResult r = run_in_child(body);
   ChildMeasurement m;
   m.ok = r.ok;
   m.peak_rss = double(r.peak_rss_bytes);
@@ -48,6 +49,13 @@ inline ChildMeasurement run_child_measurement(const std::function<int(std::strin
   else
     m.failure = r.failure + (r.output.empty() ? "" : ": " + r.output);
   return m;
+}
+
+// --set texts as the scene loader's overrides.
+inline std::vector<Override> as_overrides(const std::vector<std::string>& texts) {
+  std::vector<Override> all;
+  for (const std::string& t : texts) all.push_back({t});
+  return all;
 }
 
 // The machines are noisy: benchmarks report medians of repeats.
@@ -72,4 +80,4 @@ inline std::string scene_label(const std::string& path) {
   return name;
 }
 
-}  // namespace ede::bench
+}  // namespace ede::study

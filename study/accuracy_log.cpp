@@ -1,6 +1,6 @@
-// ede-bench accuracy, the log part: the log changes no result (the writer never changes the run), so its
+// The accuracy study, the log part: the log changes no result (the writer never changes the run), so its
 // "error" is what it costs to get a state back: seek time against bytes, for the keyframe interval.
-// On the elastic gas (double), log_events engine events: the log off; on with a keyframe every 2^k logged
+// On the elastic gas (double), its stop.events engine events: the log off; on with a keyframe every 2^k logged
 // events (engine rebuilds off, so that the interval alone places the keyframes); on with the defaults.
 // ns/event is the median over repeats of the event loop (log_measure's run_measured, a child each); the
 // seek times are log_measure's seek_row (20 times, fresh Replays, medians over repeats) on the last
@@ -11,11 +11,11 @@
 
 #include <unistd.h>
 
-#include "accuracy_parts.hpp"
-#include "bench_common.hpp"
-#include "log_measure.hpp"
+#include "study/accuracy_parts.hpp"
+#include "study/measurement.hpp"
+#include "study/log_measure.hpp"
 
-namespace ede::bench {
+namespace ede::study {
 
 namespace {
 
@@ -23,7 +23,7 @@ RunConfig log_config(const StudyPlan& plan, bool log, std::uint64_t interval, bo
   RunConfig c;
   c.label = log ? "log-" + power_of_two(interval) : "log-off";
   c.scene = plan.scene("gas");
-  c.events = plan.log_events;
+  c.overrides = plan.overrides;
   if (log && !rebuilds) c.overrides.push_back(kNoRebuilds);
   c.log = log;
   c.settings.keyframe_interval = interval;
@@ -80,4 +80,4 @@ std::vector<LogRow> measure_log(const StudyPlan& plan) {
   return rows;
 }
 
-}  // namespace ede::bench
+}  // namespace ede::study

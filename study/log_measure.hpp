@@ -1,4 +1,4 @@
-// What the log benchmark (bench_log) and the accuracy study (accuracy_log, accuracy_engine) both measure
+// What the log benchmark (log_bench) and the accuracy study (accuracy_log, accuracy_engine) both measure
 // about the event log: one run with or without a log, timed in a child process; what a written log is
 // made of (sizes, keyframes); and seeking in it (state at arbitrary times from fresh Replays).
 // Only the event loop is timed, never setup; the writer's final flush is inside the loop's last call, so
@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "engine/engine.hpp"
 #include "log/log_column_sizes.hpp"
 #include "log/log_writer.hpp"
+#include "study/study_engine.hpp"
 
-namespace ede::bench {
+namespace ede::study {
 
 constexpr int kSeekTimes = 20;
 // engine.rebuild_interval = 2^40: only the rebuild at start, so that keyframe_interval alone places keyframes.
@@ -34,9 +34,9 @@ CpuTimes cpu_times();  // getrusage: RUSAGE_SELF and RUSAGE_THREAD
 struct RunConfig {
   std::string label;
   std::string scene;
-  std::uint64_t events = 0;            // stop.events override (0: the scene's)
-  std::vector<std::string> overrides;  // more scene overrides
-  ContactRoot contact = ContactRoot::Stable;
+  std::vector<std::string> overrides;  // scene overrides (--set)
+  std::uint64_t events = 0;            // stop.events, applied after `overrides` (0: theirs or the scene's)
+  EngineVariant variant;                // the study's engine variant (accuracy: the contact root)
   bool log = false;
   LogSettings settings;
   std::string log_path;
@@ -96,4 +96,4 @@ struct SeekStats {
 };
 SeekStats seek_stats(const SeekRow& row);
 
-}  // namespace ede::bench
+}  // namespace ede::study

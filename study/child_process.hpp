@@ -7,7 +7,7 @@
 #include <functional>
 #include <string>
 
-namespace ede::tools {
+namespace ede::study {
 
 struct ChildResult {
   bool ok = false;             // exited with status 0
@@ -19,4 +19,4 @@ struct ChildResult {
 // Runs `body` in a child process; `body` returns the text to send back and the exit status.
 ChildResult run_in_child(const std::function<int(std::string& output)>& body);
 
-}  // namespace ede::tools
+}  // namespace ede::study
