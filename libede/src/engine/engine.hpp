@@ -3,8 +3,9 @@
 // make_engine looks at the effects a scene uses (walls or periodic; elastic or dissipative; gravity) once,
 // and returns the Engine instantiation with the fewest effects compiled in that computes the run (the
 // table: EngineKind, engine_factory.hpp): an elastic gas runs code in which restitution and TC do not
-// exist. The virtual calls here happen per run() call, never per event. The scalar type T (float, double, long double) is the caller's choice; where the
-// library was built with EDE_HAVE_FLOAT128, __float128 too (engine only: the log and replay do not know it).
+// exist. The virtual calls here happen per run() call, never per event. The scalar type T (float, double,
+// long double) is the caller's choice; where the library was built with EDE_HAVE_FLOAT128, __float128 too
+// (engine only: the log and replay do not know it).
 #pragma once
 
 #include <cstdint>
