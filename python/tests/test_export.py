@@ -47,3 +47,23 @@ def test_frame_times_cover_the_range(gas_log):
     t = ede.frame_times(log, frames=5)
     assert t[0] == log.start_time and t[-1] == log.end_time and len(t) == 5
     assert ede.frame_times(log) == [log.end_time]
+
+
+def test_ede_replay_export_writes_the_modules_xyz_byte_for_byte(gas_log, tmp_path):
+    from conftest import tool
+    log = ede.open(gas_log)
+    py_file = ede.export_xyz(log, tmp_path / "py.xyz", frames=3)
+    tool("ede-replay", "export", gas_log, "-o", tmp_path / "cli.xyz", "--frames", 3)
+    assert (tmp_path / "cli.xyz").read_text() == py_file.read_text()
+
+
+def test_ede_replay_export_gsd_runs_the_module(periodic_log, tmp_path):
+    gsd_hoomd = pytest.importorskip("gsd.hoomd")
+    from conftest import tool
+    tool("ede-replay", "export", periodic_log, "-o", tmp_path / "cli.gsd", "--at", "end")
+    with gsd_hoomd.open(str(tmp_path / "cli.gsd"), "rb") as traj:
+        assert len(traj) == 1
+        np.testing.assert_array_equal(traj[0].log["ede/x"], ede.open(periodic_log).state().x)
+    bad = tool("ede-replay", "export", periodic_log, "-o", tmp_path / "x.xyz", "--at", "1", "--frames", "3",
+               check=False)
+    assert bad.returncode == 2
