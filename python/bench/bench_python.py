@@ -80,6 +80,8 @@ def main():
     n = info["events"]
     e = median_time(lambda: log.events(), a.repeat)
     w = median_time(lambda: log.events(positions=True, before=True), max(1, a.repeat // 2))
+    ceiling = statistics.median(_ede._time_for_each_event(log._log) for _ in range(a.repeat))
+    print("| C++ Log::for_each_event over every event, callback doing nothing | %.3g events/s |" % ceiling)
     print("| events into numpy, narrow rows (target >= 1e7/s) | %.3g events/s |" % (n / e))
     print("| events into numpy, with positions and velocities before | %.3g events/s |" % (n / w))
     rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
