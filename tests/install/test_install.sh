@@ -68,4 +68,15 @@ mv "$work/plot_hist.py" "$prefix/share/ede/plot/plot_hist.py"
   --plot speeds.png >"$work/plot.log" 2>&1) || { cat "$work/plot.log"; fail "installed ede-stats --plot"; }
 [ -s "$work/elsewhere/speeds.png" ] || fail "installed ede-stats --plot wrote no figure"
 [ "$(cat "$work/mark.txt" 2>/dev/null)" = "installed" ] || fail "installed ede-stats did not run the installed script"
+# The installed Python package (where the module was built), imported from another folder by Debian's
+# python3 with only the prefix's site-packages added, reads the log the installed tools wrote.
+site=$(cd "$prefix" && ls -d lib/python3*/dist-packages 2>/dev/null | head -n 1)
+if [ -n "$site" ] && [ -x /usr/bin/python3 ]; then
+  x_py=$(cd "$work/elsewhere" && PYTHONPATH="$prefix/$site" /usr/bin/python3 -c \
+    'import sys, ede; print(repr(float(ede.open(sys.argv[1]).state(0.25).x[0])))' "$work/mixture.ede") ||
+    fail "the installed Python package does not import or read a log"
+  x_cli=$(echo "$row" | awk -F, '{ print $3 }')
+  /usr/bin/python3 -c 'import sys; sys.exit(float(sys.argv[1]) != float(sys.argv[2]))' "$x_py" "$x_cli" ||
+    fail "installed ede.open(...).state(0.25) gives x = $x_py, ede-replay gives $x_cli"
+fi
 echo "test_install: passed"

@@ -2,6 +2,7 @@
 // verify and diff, and exact numbers in and out.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstring>
 
 #include "ede/ede.hpp"
 #include "tool_runner.hpp"  // temp_path
@@ -128,9 +129,36 @@ TEST_CASE("Log::verify and Log::diff", "[replay][log][verify]") {
   CHECK(a.content_digest().value() != other.content_digest().value());
 }
 
+TEST_CASE("Log::event_columns hold exactly what the events hold", "[replay][log][events]") {
+  for (const char* scalar : {"double", "float", "\"long double\""}) {
+    const ede::Log log = logged(std::string("log-columns-") + std::to_string(std::strlen(scalar)) + ".ede", {{std::string("engine.scalar=") + scalar}});
+    const ede::EventRange range{.from_time = 0.1, .to_time = 0.5};
+    const auto events = log.events(range).value();
+    const ede::EventColumns c = log.event_columns(range, true, true, 10).value();
+    REQUIRE(c.size() == events.size());
+    REQUIRE(c.size() > 100);
+    CHECK(c.time.scalar() == log.info().scalar);
+    for (std::size_t k = 0; k < c.size(); ++k) {
+      const ede::Event& e = events[k];
+      REQUIRE(c.index[k] == e.index);
+      REQUIRE(c.kind[k] == static_cast<std::uint8_t>(e.kind));
+      REQUIRE((c.i[k] == e.i && c.j[k] == e.j));
+      REQUIRE(c.time.exact(k) == e.time);
+      REQUIRE((c.vix.exact(k) == e.vix && c.viy.exact(k) == e.viy && c.vjx.exact(k) == e.vjx && c.vjy.exact(k) == e.vjy));
+      REQUIRE((c.xi.exact(k) == e.xi && c.yj.exact(k) == e.yj));
+      REQUIRE((c.vix_before.exact(k) == e.vix_before && c.vjy_before.exact(k) == e.vjy_before));
+    }
+    const ede::EventColumns narrow = log.event_columns({.from_event = 5, .to_event = 9}).value();
+    CHECK(narrow.index == std::vector<std::uint64_t>{5, 6, 7, 8});
+    CHECK(narrow.xi.empty());
+    CHECK(narrow.vix_before.empty());
+  }
+}
+
 TEST_CASE("Log::open refuses what is not a log, naming the file", "[replay][log][errors]") {
   auto missing = ede::Log::open(temp_path("missing.ede"));
   REQUIRE_FALSE(missing);
+  CHECK(missing.error().kind == ede::ErrorKind::Io);
   CHECK(missing.error().message.find("missing.ede") != std::string::npos);
   CHECK_THROWS_AS(ede::Log::open(temp_path("missing.ede")).value(), ede::Exception);
 }

@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   const std::vector<std::pair<std::string, Command>> commands = {
       {"state", add_state_command(app)},   {"info", add_info_command(app)}, {"events", add_events_command(app)},
-      {"verify", add_verify_command(app)}, {"diff", add_diff_command(app)},
+      {"verify", add_verify_command(app)}, {"diff", add_diff_command(app)}, {"export", add_export_command(app)},
   };
 
   // `ede-replay LOG --at T` is `ede-replay state LOG --at T`.

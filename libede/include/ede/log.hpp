@@ -72,6 +72,19 @@ struct EventRange {
   std::optional<std::uint64_t> from_event, to_event;
 };
 
+// Events as columns, one entry per event, reals in the log's own scalar type (Column): what bindings hand
+// on as arrays (numpy) without an Event per event. Fields a kind does not have are 0, as in Event.
+struct EventColumns {
+  std::vector<std::uint64_t> index;
+  Column time;
+  std::vector<std::uint8_t> kind;                   // EventKind
+  std::vector<std::int32_t> i, j;
+  Column vix, viy, vjx, vjy;                        // after the event
+  Column xi, yi, xj, yj;                            // at the event (only when asked for; else empty)
+  Column vix_before, viy_before, vjx_before, vjy_before;  // just before (only when asked for; else empty)
+  std::size_t size() const { return index.size(); }
+};
+
 struct VerifyOptions {
   std::function<void(double fraction, std::uint64_t events)> progress;  // every 2^16 events
 };
@@ -115,6 +128,10 @@ class Log {
   Result<std::vector<Event>> events(const EventRange& range) const;
   // The same, one at a time; f returns false to stop early.
   Status for_each_event(const EventRange& range, const std::function<bool(const Event&)>& f) const;
+  // The same as columns: several times faster than one Event at a time for long ranges. `positions` and
+  // `before` add those columns; `expected` (optional) reserves room for that many events.
+  Result<EventColumns> event_columns(const EventRange& range, bool positions = false, bool before = false,
+                                     std::size_t expected = 0) const;
   // Counts by kind from the chunks' kind columns alone (no replay).
   Result<EventCounts> count_events() const;
 

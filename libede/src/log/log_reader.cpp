@@ -53,27 +53,30 @@ Result<std::shared_ptr<LogReader>> LogReader::open(const std::string& path, cons
   r->path_ = path;
   r->limits_ = limits;
   r->fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (r->fd_ < 0) return Error{"cannot open '" + path + "': " + std::strerror(errno)};
+  if (r->fd_ < 0) return Error{"cannot open '" + path + "': " + std::strerror(errno), ErrorKind::Io};
   struct stat st{};
-  if (::fstat(r->fd_, &st) != 0) return Error{"cannot read '" + path + "': " + std::strerror(errno)};
+  if (::fstat(r->fd_, &st) != 0) return Error{"cannot read '" + path + "': " + std::strerror(errno), ErrorKind::Io};
   r->file_size_ = std::uint64_t(st.st_size);
   unsigned char head[logfmt::kFileHeaderSize];
   if (r->file_size_ < logfmt::kFileHeaderSize || !read_exact(r->fd_, 0, head, sizeof head))
-    return Error{path + ": too short to be an ede event log (" + std::to_string(r->file_size_) + " bytes)"};
+    return Error{path + ": too short to be an ede event log (" + std::to_string(r->file_size_) + " bytes)", ErrorKind::Corrupt};
   std::uint32_t version = 0;
-  if (std::string why = logfmt::check_file_header(head, version); !why.empty()) return Error{path + ": " + why};
+  // check_file_header reads the version only once the magic number matched: a version it then refuses is
+  // a log of another format version (Unsupported), anything else is not a log at all (Corrupt).
+  if (std::string why = logfmt::check_file_header(head, version); !why.empty())
+    return Error{path + ": " + why, version != 0 ? ErrorKind::Unsupported : ErrorKind::Corrupt};
 
   // The header record comes first; without it nothing else can be read.
   const std::uint64_t first = logfmt::kFileHeaderSize;
   unsigned char rh_bytes[logfmt::kRecordHeaderSize];
   if (r->file_size_ < first + sizeof rh_bytes || !read_exact(r->fd_, first, rh_bytes, sizeof rh_bytes))
-    return Error{at(path, first) + ": the log ends before its header record (the run was killed at once?)"};
+    return Error{at(path, first) + ": the log ends before its header record (the run was killed at once?)", ErrorKind::Corrupt};
   std::string why;
   const auto rh = logfmt::decode_record_header(rh_bytes, why);
   if (!rh || rh->kind != logfmt::RecordKind::Header)
-    return Error{at(path, first) + ": the first record is not a valid header" + (why.empty() ? "" : ": " + why)};
+    return Error{at(path, first) + ": the first record is not a valid header" + (why.empty() ? "" : ": " + why), ErrorKind::Corrupt};
   if (first + sizeof rh_bytes + rh->payload_size > r->file_size_)
-    return Error{at(path, first) + ": the header record is cut short"};
+    return Error{at(path, first) + ": the header record is cut short", ErrorKind::Corrupt};
   r->header_.format_version = version;
   if (Status s = r->read_header_record(first, rh->payload_size); !s) return s.error();
   r->header_record_end_ = first + sizeof rh_bytes + rh->payload_size;
@@ -112,18 +115,18 @@ Result<std::shared_ptr<LogReader>> LogReader::open(const std::string& path, cons
 Result<std::vector<std::uint64_t>> LogReader::load_message(std::uint64_t offset, std::uint64_t payload_size) const {
   const std::uint64_t start = offset + logfmt::kRecordHeaderSize;
   if (payload_size == 0 || payload_size > logfmt::kMaxPayloadBytes || start + payload_size > file_size_)
-    return Error{at(path_, offset) + ": record payload outside the file"};
+    return Error{at(path_, offset) + ": record payload outside the file", ErrorKind::Corrupt};
   std::vector<unsigned char> compressed(payload_size);
   if (!read_exact(fd_, start, compressed.data(), compressed.size()))
-    return Error{at(path_, offset) + ": cannot read the record"};
+    return Error{at(path_, offset) + ": cannot read the record", ErrorKind::Corrupt};
   const unsigned long long content = ZSTD_getFrameContentSize(compressed.data(), compressed.size());
   if (content == ZSTD_CONTENTSIZE_ERROR || content == ZSTD_CONTENTSIZE_UNKNOWN)
-    return Error{at(path_, offset) + ": the record is not a zstd frame with a declared size"};
+    return Error{at(path_, offset) + ": the record is not a zstd frame with a declared size", ErrorKind::Corrupt};
   if (content == 0 || content > limits_.max_record_bytes || content % 8 != 0)
     return Error{at(path_, offset) + ": implausible record size " + std::to_string(content) + " bytes (limit " +
                  std::to_string(limits_.max_record_bytes) + ")"};
   if (ZSTD_findFrameCompressedSize(compressed.data(), compressed.size()) != payload_size)
-    return Error{at(path_, offset) + ": the zstd frame does not fill its record"};
+    return Error{at(path_, offset) + ": the zstd frame does not fill its record", ErrorKind::Corrupt};
   // Streamed into a buffer that grows only as output arrives: a corrupted declared size cannot make us
   // allocate gigabytes up front; the output must then match the declared size exactly.
   std::vector<std::uint64_t> words(std::min<std::uint64_t>(content, kInitialBuffer) / 8);
@@ -155,7 +158,7 @@ Result<std::vector<std::uint64_t>> LogReader::load_message(std::uint64_t offset,
   }
   ZSTD_freeDStream(stream);
   if (problem.empty() && produced != content) problem = "the record decompresses to the wrong size";
-  if (!problem.empty()) return Error{at(path_, offset) + ": " + problem};
+  if (!problem.empty()) return Error{at(path_, offset) + ": " + problem, ErrorKind::Corrupt};
   return words;
 }
 
@@ -173,7 +176,7 @@ Status LogReader::read_header_record(std::uint64_t offset, std::uint64_t payload
       case logschema::ScalarType::FLOAT32: out.scalar = ScalarKind::Float; break;
       case logschema::ScalarType::FLOAT64: out.scalar = ScalarKind::Double; break;
       case logschema::ScalarType::FLOAT80: out.scalar = ScalarKind::LongDouble; break;
-      default: return Error{at(path_, offset) + ": unknown scalar type in the header"};
+      default: return Error{at(path_, offset) + ": unknown scalar type in the header", ErrorKind::Corrupt};
     }
     out.seed = h.getSeed();
     out.scene_name = h.getSceneName();
@@ -198,18 +201,18 @@ Status LogReader::read_header_record(std::uint64_t offset, std::uint64_t payload
       return Error{at(path_, offset) + ": chunk column encoding " + std::to_string(h.getColumnEncoding()) +
                    " is unknown to this ede (it reads encoding 1)"};
   } catch (const kj::Exception& e) {
-    return Error{at(path_, offset) + ": malformed header record (" + e.getDescription().cStr() + ")"};
+    return Error{at(path_, offset) + ": malformed header record (" + e.getDescription().cStr() + ")", ErrorKind::Corrupt};
   }
   const LogHeaderInfo& h = header_;
   const std::size_t w = scalar_width(h.scalar);
   if (h.disks == 0 || h.disks > limits_.max_disks || h.radius.size() != std::size_t(h.disks) * w ||
       h.mass.size() != std::size_t(h.disks) * w || h.species.size() != h.disks)
-    return Error{at(path_, offset) + ": the header's per-disk data does not match its disk count"};
+    return Error{at(path_, offset) + ": the header's per-disk data does not match its disk count", ErrorKind::Corrupt};
   for (const std::uint32_t s : h.species)
-    if (s >= h.species_names.size()) return Error{at(path_, offset) + ": a disk names a species that does not exist"};
+    if (s >= h.species_names.size()) return Error{at(path_, offset) + ": a disk names a species that does not exist", ErrorKind::Corrupt};
   if (!(h.lx > 0) || !(h.ly > 0) || !std::isfinite(h.lx) || !std::isfinite(h.ly) || h.chunk_events == 0 ||
       !std::isfinite(h.gx) || !std::isfinite(h.gy))
-    return Error{at(path_, offset) + ": the header's box or chunk size is invalid"};
+    return Error{at(path_, offset) + ": the header's box or chunk size is invalid", ErrorKind::Corrupt};
   return Ok{};
 }
 
@@ -217,9 +220,9 @@ Status LogReader::read_header_record(std::uint64_t offset, std::uint64_t payload
 Status LogReader::read_index(std::uint64_t offset) {
   unsigned char rh_bytes[logfmt::kRecordHeaderSize];
   std::string why;
-  if (!read_exact(fd_, offset, rh_bytes, sizeof rh_bytes)) return Error{"cannot read the index record"};
+  if (!read_exact(fd_, offset, rh_bytes, sizeof rh_bytes)) return Error{"cannot read the index record", ErrorKind::Corrupt};
   const auto rh = logfmt::decode_record_header(rh_bytes, why);
-  if (!rh || rh->kind != logfmt::RecordKind::Index) return Error{"no index record where the trailer points"};
+  if (!rh || rh->kind != logfmt::RecordKind::Index) return Error{"no index record where the trailer points", ErrorKind::Corrupt};
   auto words = load_message(offset, rh->payload_size);
   if (!words) return words.error();
   try {
@@ -230,32 +233,32 @@ Status LogReader::read_index(std::uint64_t offset) {
       LogRecordRef ref{e.getKind(), e.getOffset(), 0, e.getFirstEvent(), e.getCount(),
                        e.getTimeFirst(), e.getTimeLast(), e.getResumable()};
       if (ref.offset < header_record_end_ || ref.offset + logfmt::kRecordHeaderSize > offset)
-        return Error{"an index entry points outside the records"};
+        return Error{"an index entry points outside the records", ErrorKind::Corrupt};
       unsigned char entry_header[logfmt::kRecordHeaderSize];
-      if (!read_exact(fd_, ref.offset, entry_header, sizeof entry_header)) return Error{"cannot read a record"};
+      if (!read_exact(fd_, ref.offset, entry_header, sizeof entry_header)) return Error{"cannot read a record", ErrorKind::Corrupt};
       const auto h = logfmt::decode_record_header(entry_header, why);
       if (!h || std::uint8_t(h->kind) != ref.kind || h->first_event != ref.first_event)
-        return Error{"an index entry does not match its record at byte " + std::to_string(ref.offset)};
+        return Error{"an index entry does not match its record at byte " + std::to_string(ref.offset), ErrorKind::Corrupt};
       ref.payload_size = h->payload_size;
       if (ref.offset + logfmt::kRecordHeaderSize + ref.payload_size > offset)
-        return Error{"a record overlaps the index"};
+        return Error{"a record overlaps the index", ErrorKind::Corrupt};
       if (ref.kind == std::uint8_t(logfmt::RecordKind::Chunk)) {
         if (ref.first_event != next_event || ref.count == 0 || ref.count > (1u << 24))
-          return Error{"chunks are not contiguous at event " + std::to_string(next_event)};
+          return Error{"chunks are not contiguous at event " + std::to_string(next_event), ErrorKind::Corrupt};
         next_event += ref.count;
         chunks_.push_back(ref);
       } else if (ref.kind == std::uint8_t(logfmt::RecordKind::Keyframe)) {
-        if (ref.first_event != next_event) return Error{"a keyframe is not at a chunk boundary"};
+        if (ref.first_event != next_event) return Error{"a keyframe is not at a chunk boundary", ErrorKind::Corrupt};
         keyframes_.push_back(ref);
       } else {
-        return Error{"unknown record kind in the index"};
+        return Error{"unknown record kind in the index", ErrorKind::Corrupt};
       }
     }
-    if (idx.getTotalEvents() != next_event) return Error{"the index's event total does not match its chunks"};
+    if (idx.getTotalEvents() != next_event) return Error{"the index's event total does not match its chunks", ErrorKind::Corrupt};
     total_events_ = next_event;
     const auto ft = idx.getFinalTime();
     final_time_.assign(ft.begin(), ft.end());
-    if (final_time_.size() != scalar_width(header_.scalar)) return Error{"the index's final time is malformed"};
+    if (final_time_.size() != scalar_width(header_.scalar)) return Error{"the index's final time is malformed", ErrorKind::Corrupt};
     final_status_ = idx.getStatus();
   } catch (const kj::Exception& e) {
     return Error{std::string("malformed index (") + e.getDescription().cStr() + ")"};

@@ -111,26 +111,82 @@ Result<State> Log::state_at_end() const {
   return state_at(impl_->info.end_time);
 }
 
+namespace {
+
+// The events of `range` in order, as the log's own ReplayedEvent<T>: the one walk behind for_each_event and
+// event_columns.
+template <class T>
+Status walk_events(const Log::Impl& impl, const EventRange& range,
+                   const std::function<bool(const ReplayedEvent<T>&)>& f) {
+  auto replay = impl.replay_in<T>();
+  if (!replay) return replay.error();
+  Replay<T>& r = *replay.value();
+  const std::uint64_t total = impl.info.events;
+  std::uint64_t first = range.from_event.value_or(0), end = std::min(total, range.to_event.value_or(total));
+  if (first > total)
+    return Error{impl.info.path + ": event " + std::to_string(first) + " is beyond the log's " +
+                 std::to_string(total) + " events"};
+  const T t1 = range.to_time ? T(*range.to_time) : std::numeric_limits<T>::infinity();
+  if (range.from_time) {
+    const T t0 = T(*range.from_time);
+    if (t0 > r.final_time()) return Ok{};
+    auto at = seek_before(r, t0);
+    if (!at) return at.error();
+    first = std::max(first, at.value());
+  }
+  if (first >= end) return Ok{};
+  return r.for_each_event(first, end, [&](const ReplayedEvent<T>& e) { return e.time <= t1 && f(e); });
+}
+
+template <class T>
+struct ColumnsOf {
+  std::vector<T> time, after[4], at[4], pre[4];
+};
+
+}  // namespace
+
 Status Log::for_each_event(const EventRange& range, const std::function<bool(const Event&)>& f) const {
   return with_scalar(impl_->info.scalar, [&]<class T>() -> Status {
-    auto replay = impl_->replay_in<T>();
-    if (!replay) return replay.error();
-    Replay<T>& r = *replay.value();
-    const std::uint64_t total = impl_->info.events;
-    std::uint64_t first = range.from_event.value_or(0), end = std::min(total, range.to_event.value_or(total));
-    if (first > total)
-      return Error{impl_->info.path + ": event " + std::to_string(first) + " is beyond the log's " +
-                   std::to_string(total) + " events"};
-    const T t1 = range.to_time ? T(*range.to_time) : std::numeric_limits<T>::infinity();
-    if (range.from_time) {
-      const T t0 = T(*range.from_time);
-      if (t0 > r.final_time()) return Ok{};
-      auto at = seek_before(r, t0);
-      if (!at) return at.error();
-      first = std::max(first, at.value());
+    return walk_events<T>(*impl_, range, [&](const ReplayedEvent<T>& e) { return f(event_of(e)); });
+  });
+}
+
+Result<EventColumns> Log::event_columns(const EventRange& range, bool positions, bool before,
+                                        std::size_t expected) const {
+  return with_scalar(impl_->info.scalar, [&]<class T>() -> Result<EventColumns> {
+    EventColumns out;
+    ColumnsOf<T> c;
+    out.index.reserve(expected), out.kind.reserve(expected), out.i.reserve(expected), out.j.reserve(expected);
+    c.time.reserve(expected);
+    for (int k = 0; k < 4; ++k) {
+      c.after[k].reserve(expected);
+      if (positions) c.at[k].reserve(expected);
+      if (before) c.pre[k].reserve(expected);
     }
-    if (first >= end) return Ok{};
-    return r.for_each_event(first, end, [&](const ReplayedEvent<T>& e) { return e.time <= t1 && f(event_of(e)); });
+    Status s = walk_events<T>(*impl_, range, [&](const ReplayedEvent<T>& e) {
+      out.index.push_back(e.index), out.kind.push_back(static_cast<std::uint8_t>(e.kind));
+      out.i.push_back(e.i), out.j.push_back(e.j);
+      c.time.push_back(e.time);
+      c.after[0].push_back(e.vix), c.after[1].push_back(e.viy), c.after[2].push_back(e.vjx), c.after[3].push_back(e.vjy);
+      if (positions) c.at[0].push_back(e.xi), c.at[1].push_back(e.yi), c.at[2].push_back(e.xj), c.at[3].push_back(e.yj);
+      if (before) {
+        c.pre[0].push_back(e.vix0), c.pre[1].push_back(e.viy0), c.pre[2].push_back(e.vjx0), c.pre[3].push_back(e.vjy0);
+      }
+      return true;
+    });
+    if (!s) return s.error();
+    out.time = Column(std::move(c.time));
+    out.vix = Column(std::move(c.after[0])), out.viy = Column(std::move(c.after[1]));
+    out.vjx = Column(std::move(c.after[2])), out.vjy = Column(std::move(c.after[3]));
+    if (positions) {
+      out.xi = Column(std::move(c.at[0])), out.yi = Column(std::move(c.at[1]));
+      out.xj = Column(std::move(c.at[2])), out.yj = Column(std::move(c.at[3]));
+    }
+    if (before) {
+      out.vix_before = Column(std::move(c.pre[0])), out.viy_before = Column(std::move(c.pre[1]));
+      out.vjx_before = Column(std::move(c.pre[2])), out.vjy_before = Column(std::move(c.pre[3]));
+    }
+    return out;
   });
 }
 

@@ -1,0 +1,27 @@
+"""ede: event-driven simulation of two-dimensional hard disks -- from Python.
+
+    import ede
+    summary = ede.run("examples/gas.toml", log="gas.ede", set={"physics.restitution": 0.9})
+    log = ede.open("gas.ede")
+    s = log.state(0.5)                       # numpy arrays, bit-identical to ede-replay --at 0.5
+    ev = log.events(0.0, 0.1)                # a numpy structured array, one row per event
+    h = ede.distribution(log)                # speed histogram, 2D Maxwell-Boltzmann, KS test
+    ede.export_xyz(log, "gas.xyz", frames=50)   # for ASE and OVITO
+
+Errors are ede.Error subclasses carrying the library's messages (the same text as the tools print).
+See docs/python.md.
+"""
+from . import _ede
+from ._errors import CorruptLogError, Error, InvalidError, IoError, UnsupportedError
+from .analysis import Report, collision_series, crater, distribution, energy_series, pressure, species_stats
+from .export import export_gsd, export_xyz, frame_times
+from .log import EVENT_KINDS, Log, open
+from .run import Simulation, load_scene, resume, run
+from .state import State
+
+__version__ = _ede.version()
+
+__all__ = ["CorruptLogError", "Error", "InvalidError", "IoError", "UnsupportedError", "Report",
+           "collision_series", "crater", "distribution", "energy_series", "pressure", "species_stats",
+           "export_gsd", "export_xyz", "frame_times", "EVENT_KINDS", "Log", "open", "Simulation",
+           "load_scene", "resume", "run", "State"]

@@ -1,0 +1,109 @@
+"""Log: an event log (.ede) opened for reading -- states at any time, events, checks."""
+import os
+import tomllib
+
+from . import _ede
+from .state import State
+
+__all__ = ["Log", "open"]
+
+EVENT_KINDS = ("pair", "wall", "cell", "wrap", "action", "sample")
+
+
+class Log:
+    """An event log opened for reading (``ede.open(path)``).
+
+    Nothing in the file is trusted: a damaged or truncated log raises ede.CorruptLogError naming the
+    file and the byte; a log whose run was killed reads up to its last complete record
+    (``info["complete"]`` is False). States are rebuilt from the nearest keyframe with the engine's own
+    functions: bit-identical to the run, and to ``ede-replay --at``.
+    """
+
+    def __init__(self, path):
+        if not isinstance(path, (str, os.PathLike)):
+            raise TypeError("ede.open: expected a path (str or os.PathLike), got %s" % type(path).__name__)
+        self.path = os.fspath(path)
+        self._log = _ede.Log(self.path)
+        self._info = None
+
+    @property
+    def info(self):
+        """What the log holds: a dict (scene as a dict, seed, counts, time span, complete or not, ...)."""
+        if self._info is None:
+            info = self._log.info()
+            info["scene"] = tomllib.loads(info["scene_text"])
+            self._info = info
+        return self._info
+
+    @property
+    def species(self):
+        """The species: a list of (name, count)."""
+        i = self.info
+        return list(zip(i["species_names"], i["species_counts"]))
+
+    @property
+    def start_time(self):
+        return self.info["start_time"]
+
+    @property
+    def end_time(self):
+        return self.info["end_time"]
+
+    def state(self, t=None, *, event=None):
+        """The state after every event with time <= t (a number, or a string as ede-replay --at reads it),
+        or after the first `event` events; with neither, the state at the end of the log."""
+        if t is not None and event is not None:
+            raise TypeError("state: give a time t or event=n, not both")
+        if event is not None:
+            if isinstance(event, bool) or not hasattr(event, "__index__"):
+                raise TypeError("state(event=n): expected an int, got %s" % type(event).__name__)
+            return State(self._log.state_at_event(event.__index__()))
+        if t is None:
+            return State(self._log.state_at_end())
+        return State(self._log.state_at(t))
+
+    def states(self, times):
+        """The states at each of `times`, one after the other. Increasing times continue the replay from
+        the previous state instead of seeking again from a keyframe."""
+        for t in times:
+            yield self.state(t)
+
+    def events(self, t0=None, t1=None, *, first=None, last=None, positions=False, before=False, impulse=False):
+        """The logged events with t0 <= time <= t1 (and index in [first, last)) as a numpy structured
+        array: index, time, kind (EVENT_KINDS[kind]), i, j, and the velocities after the event vix, viy,
+        vjx, vjy; with positions=True also xi, yi, xj, yj (at the event), before=True the velocities just
+        before (vix_before, ...), impulse=True the impulse on disk i (px, py = m_i (v_i' - v_i)).
+        Reals are in the log's scalar type. j is the partner (pair), the wall (wall) or the edge (wrap)."""
+        for name, v in (("first", first), ("last", last)):
+            if v is not None and (isinstance(v, bool) or not hasattr(v, "__index__")):
+                raise TypeError("events(%s=...): expected an int, got %s" % (name, type(v).__name__))
+        return _ede.events(self._log, t0, t1, first, last, bool(positions), bool(before), bool(impulse))
+
+    def count_events(self):
+        """Events by kind, from the log's kind columns (no replay)."""
+        return self._log.count_events()
+
+    def verify(self):
+        """Reruns the logged scene and compares every event with the log (a dict; 'identical' says)."""
+        return self._log.verify()
+
+    def diff(self, other, full=False):
+        """The first event at which this log and `other` part (a dict: identical, first_difference, text)."""
+        if not isinstance(other, Log):
+            raise TypeError("diff: expected an ede.Log, got %s" % type(other).__name__)
+        return self._log.diff(other._log, full)
+
+    def content_digest(self):
+        """A digest of what the log says (scene, events, final state), independent of how it is stored."""
+        return self._log.content_digest()
+
+    def __repr__(self):
+        i = self.info
+        return "<ede.Log %s: %d disks, %d events, t in [%g, %g]%s>" % (
+            self.path, i["disks"], i["events"], i["start_time"], i["end_time"],
+            "" if i["complete"] else ", incomplete")
+
+
+def open(path):
+    """Opens an event log for reading."""
+    return Log(path)

@@ -1,0 +1,54 @@
+"""State: every disk at one time, as numpy arrays in the run's own precision."""
+import numpy as np
+
+__all__ = ["State"]
+
+
+class State:
+    """Every disk at one time.
+
+    x, y, vx, vy, radius, mass: numpy arrays in the run's scalar type (float32, float64 or longdouble),
+    bit-identical to the engine's state (and to ``ede-replay --at``); species: int32 index into
+    species_names; id: the disks' ids (0..N-1, the arrays' order). Positions are those at ``time``.
+    The arrays are views of the library's own buffers: read-only unless copied.
+    """
+
+    __slots__ = ("time", "time_text", "events", "scalar", "lx", "ly", "boundary", "x", "y", "vx", "vy",
+                 "radius", "mass", "species", "species_names")
+
+    def __init__(self, d):
+        for k in self.__slots__:
+            setattr(self, k, d[k])
+        for k in ("x", "y", "vx", "vy", "radius", "mass", "species"):
+            getattr(self, k).flags.writeable = False
+
+    def __len__(self):
+        return len(self.species)
+
+    @property
+    def id(self):
+        return np.arange(len(self.species), dtype=np.int64)
+
+    @property
+    def speed(self):
+        return np.hypot(self.vx, self.vy)
+
+    @property
+    def kinetic_energy(self):
+        return 0.5 * self.mass * (self.vx * self.vx + self.vy * self.vy)
+
+    def species_mask(self, name):
+        """A boolean mask of the disks of species `name`."""
+        try:
+            k = self.species_names.index(name)
+        except ValueError:
+            raise KeyError("no species %r (this state has: %s)" % (name, ", ".join(self.species_names))) from None
+        return self.species == k
+
+    def to_dict(self):
+        """The columns as a dict (for pandas.DataFrame(state.to_dict()))."""
+        return {"id": self.id, "species": np.asarray(self.species_names, dtype=object)[self.species],
+                "x": self.x, "y": self.y, "vx": self.vx, "vy": self.vy, "radius": self.radius, "mass": self.mass}
+
+    def __repr__(self):
+        return "<ede.State %d disks at t=%s (%s, %d events)>" % (len(self), self.time_text, self.scalar, self.events)
