@@ -10,7 +10,7 @@ namespace ede::tools {
 void PaceWatch::update(double fraction, std::uint64_t events, double wall_seconds) {
   if (done_ || wall_seconds < pilot_seconds_) return;
   done_ = true;
-  if (!(fraction > 0)) {
+  if (!(fraction > 1e-12)) {  // nothing, or so little that the estimate would be ages
     std::fprintf(stderr,
                  "%s: warning: no measurable progress towards any stop condition after %s s (%llu events): the run "
                  "may never end. Check the [stop] table (an energy_fraction the collisions cannot reach? a time far "
