@@ -1,7 +1,10 @@
 // check_outputs_distinct; see file_checks.hpp.
 #include "file_checks.hpp"
 
+#include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <mutex>
 
@@ -56,6 +59,7 @@ namespace {
 struct NotedInput {
   std::string what, path;
   Identity id;
+  int fd;  // held open with a shared lock until the process ends (-1: none)
 };
 std::vector<NotedInput>& noted() {  // under noted_mutex(): ede-crater scan opens logs on several threads
   static std::vector<NotedInput> inputs;
@@ -70,7 +74,13 @@ std::mutex& noted_mutex() {
 void note_input(const std::string& what, const std::string& path) {
   const Identity id = identity_of(path);
   const std::lock_guard<std::mutex> lock(noted_mutex());
-  if (id.exists && !is_device(path)) noted().push_back({what, path, id});
+  if (!id.exists || is_device(path)) return;
+  int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd >= 0 && ::flock(fd, LOCK_SH | LOCK_NB) != 0) {  // being written: read it anyway, unlocked
+    ::close(fd);
+    fd = -1;
+  }
+  noted().push_back({what, path, id, fd});
 }
 
 Status check_not_an_input(const std::string& output) {

@@ -28,6 +28,9 @@ Status check_outputs_distinct(const std::vector<NamedPath>& inputs, const std::v
 // The inputs of this process, noted as they are opened (open_log_warning notes every log a tool reads), so
 // that every output path (Output, commit_temporary) can refuse to replace one, whichever tool and option
 // named it.
+// A log noted as input is also held open with a shared lock (flock) for the life of the process, so an
+// ede-sim told to write over it meanwhile is refused (the log writer's exclusive lock cannot be taken);
+// a log being written (exclusively locked) is still read, without the shared lock.
 void note_input(const std::string& what, const std::string& path);
 Status check_not_an_input(const std::string& output);
 

@@ -51,8 +51,9 @@ RecordWriter::RecordWriter(const std::string& path, std::uint64_t start_offset, 
   if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
     const int err = errno;
     error_ = err == EWOULDBLOCK
-                 ? "'" + path + "' is being written by another process (an ede-sim holds its lock): two runs cannot "
-                   "write one log. Fix: give this run another -o, or wait for the other to finish."
+                 ? "'" + path + "' is being written by another process (an ede-sim holds its lock) or read by "
+                   "another ede tool: a log is written by one run and replaced by none while it is read. Fix: give "
+                   "this run another -o, or wait for the other to finish."
                  : "cannot lock '" + path + "' for writing: " + std::strerror(err);
     ::close(fd_);
     fd_ = -1;
