@@ -67,7 +67,9 @@ struct Progress {
 };
 
 struct SimulationOptions {
-  std::string log_path;  // record every event here ("" = no log); an existing file is replaced
+  // Record every event here ("" = no log); an existing file is replaced, unless another run is writing it
+  // or an ede tool is reading it (both hold a lock on it): then create() fails, naming the file.
+  std::string log_path;
   // Called every 2^18 events or so (a few times a second) from run() and advance_to().
   std::function<void(const Progress&)> progress;
 };
