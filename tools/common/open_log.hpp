@@ -8,10 +8,12 @@
 #include <string>
 
 #include "ede/log.hpp"
+#include "file_checks.hpp"
 
 namespace ede::tools {
 
 inline Result<Log> open_log_warning(const char* tool, const std::string& path) {
+  note_input("the log", path);  // no output of this tool may replace it
   auto log = Log::open(path);
   if (log && !log.value().info().complete)
     std::fprintf(stderr, "%s: warning: %s is %s: %s\n", tool, path.c_str(),

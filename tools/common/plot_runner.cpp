@@ -8,6 +8,11 @@
 // the source tree moved), an environment variable (one more thing to set).
 #include "plot_runner.hpp"
 
+#include <cstdio>
+
+#include "file_checks.hpp"
+#include "output_file.hpp"
+
 #include <unistd.h>
 
 #include <filesystem>
@@ -57,6 +62,18 @@ Status run_plot_script(const std::string& script, const std::vector<std::string>
   if (err.find("No module named 'matplotlib'") != std::string::npos)
     return Error{"figures need matplotlib: install python3-matplotlib (scripts/install-deps.sh does)"};
   return Error{"the plotting script " + script + " failed:\n" + err};
+}
+
+Status run_plot_script_to(const std::string& script, std::vector<std::string> args, const std::string& figure) {
+  if (Status s = check_not_an_input(figure); !s) return s;
+  const std::string temp = temporary_name(figure);
+  for (std::string& a : args)
+    if (a == figure) a = temp;
+  if (Status s = run_plot_script(script, args); !s) {
+    std::remove(temp.c_str());
+    return s;
+  }
+  return commit_temporary(temp, figure);
 }
 
 }  // namespace ede::tools

@@ -16,4 +16,9 @@ namespace ede::tools {
 // tree's tools/plot); the error carries the script's stderr.
 Status run_plot_script(const std::string& script, const std::vector<std::string>& args);
 
+// The same for a script that writes the figure `figure` (one of args): it writes a temporary file beside
+// it (same extension, so matplotlib picks the format), renamed over `figure` only when the script
+// succeeded; never over one of the tool's inputs.
+Status run_plot_script_to(const std::string& script, std::vector<std::string> args, const std::string& figure);
+
 }  // namespace ede::tools

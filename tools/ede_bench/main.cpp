@@ -7,10 +7,11 @@
 // The command-line language is docs/cli.md's; each subcommand's options are in its file (bench_*.cpp).
 #include <CLI/CLI.hpp>
 
+#include "tool_main.hpp"
 #include "command_line.hpp"
 #include "commands.hpp"
 
-int main(int argc, char** argv) {
+static int run_main(int argc, char** argv) {
   CLI::App app{"ede-bench: benchmarks and studies of the ede engine"};
   app.require_subcommand(1);
   const ede::bench::Command commands[] = {
@@ -23,3 +24,6 @@ int main(int argc, char** argv) {
     if (*c.app) return c.run();
   return 0;
 }
+
+// Out of memory, a stray exception and a failed stdout become one message and a documented status.
+int main(int argc, char** argv) { return ede::tools::run_tool("ede-bench", run_main, argc, argv); }

@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "crater_tool.hpp"
+#include "output_file.hpp"
 
 namespace ede::crater_tool {
 
@@ -18,11 +19,7 @@ std::string csv_field(const std::string& text) {
 }
 
 Status write_text_file(const std::string& path, const std::string& text) {
-  std::FILE* f = std::fopen(path.c_str(), "w");
-  if (!f) return Error{"cannot write '" + path + "': " + std::strerror(errno)};
-  const bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-  if (std::fclose(f) != 0 || !written) return Error{"error while writing '" + path + "'"};
-  return Ok{};
+  return tools::write_file_atomically(path, text);  // temporary, then renamed; never over an input
 }
 
 Status write_profile_csv(const std::string& path, const CraterMeasurement& m) {

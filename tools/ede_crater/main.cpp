@@ -12,10 +12,11 @@
 #include <string>
 #include <vector>
 
+#include "tool_main.hpp"
 #include "command_line.hpp"
 #include "crater_tool.hpp"
 
-int main(int argc, char** argv) {
+static int run_main(int argc, char** argv) {
   using namespace ede::crater_tool;
   CLI::App app{"ede-crater: measure the crater a projectile leaves in a bed of disks, from ede-sim's event logs"};
   app.require_subcommand(1);
@@ -31,3 +32,6 @@ int main(int argc, char** argv) {
     if (app.got_subcommand(name)) return run();
   return usage_error("give a log, or a subcommand");
 }
+
+// Out of memory, a stray exception and a failed stdout become one message and a documented status.
+int main(int argc, char** argv) { return ede::tools::run_tool("ede-crater", run_main, argc, argv); }

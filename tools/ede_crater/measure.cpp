@@ -107,10 +107,11 @@ int run_measure(const Options& opt) {
   }
   if (!opt.plot.empty()) {
     const CraterMeasurement& m = ml.crater;
-    const Status s = tools::run_plot_script(
+    const Status s = tools::run_plot_script_to(
         "plot_crater.py", {"measure", profile, energy, opt.plot, "--time", exact(m.time), "--fraction",
                            exact(m.energy.fraction), "--drop-threshold", exact(m.report.lengths.drop_threshold),
-                           "--title", std::filesystem::path(opt.log).filename().string()});
+                           "--title", std::filesystem::path(opt.log).filename().string()},
+        opt.plot);
     cleanup();
     if (!s) return fail(s.error().message);
     std::printf("wrote             %s (figure)\n", opt.plot.c_str());

@@ -5,10 +5,11 @@
 //
 // Every run's scene is loaded first, with the overrides of that run, so a mistyped key or a bad value
 // fails at once with the scene loader's message, before any run starts or any file is written. The runs
-// go in-process, J at a time (scan_runs.cpp); then the logs are measured one after another in (value,
-// seed) order, exactly as `ede-crater LOG` measures them. Rejected: measuring inside the workers as runs
-// finish, which saves little (measuring is a replay, much faster than the run) and would make the order
-// of the work, if not of the results, depend on timing.
+// go in-process, J at a time (scan_runs.cpp), each log measured by its worker as soon as its run ends,
+// exactly as `ede-crater LOG` measures it (results stored by index: the tables never depend on timing), and
+// with --no-logs deleted then. Runs that ended in inelastic collapse, with a non-finite number or
+// unfinished are marked in scan.csv (suspect), counted in scan-aggregate.csv (n_suspect), flagged in the
+// table and ringed in the figure. Rejected: measuring after all runs (every log on disk at once).
 #include <cctype>
 #include <filesystem>
 #include <memory>
@@ -27,7 +28,7 @@ struct Options {
   std::size_t seeds = 1, jobs = 0;
   std::uint64_t first_seed = 1;
   std::vector<std::string> sets;
-  bool quiet = false;
+  bool quiet = false, no_logs = false;
   MeasureOptions measure;
 };
 
@@ -75,15 +76,6 @@ std::size_t metric_index(const std::string& name) {
   return k;
 }
 
-Status measure_runs(const Options& opt, ScanResults& r) {
-  for (const ScanRun& run : r.runs) {
-    auto m = measure_log(opt.out_dir + "/" + run.name + ".ede", opt.measure);
-    if (!m) return m.error();
-    r.measured.push_back(std::move(m).value());
-  }
-  return Ok{};
-}
-
 int run_scan(const Options& opt) {
   auto values = split_values(opt.values_text);
   if (!values) return usage_error(values.error().message);
@@ -98,16 +90,16 @@ int run_scan(const Options& opt) {
   if (ec) return fail("cannot create the output directory '" + opt.out_dir + "': " + ec.message());
 
   const std::size_t jobs = opt.jobs ? opt.jobs : std::max(1u, std::thread::hardware_concurrency());
-  if (Status s = run_scans(runs.value(), opt.out_dir, jobs, !opt.quiet); !s) return fail(s.error().message);
-  ScanResults r{values.value(), std::move(runs).value(), {}};
-  if (Status s = measure_runs(opt, r); !s) return fail(s.error().message);
+  auto measured = run_scans(runs.value(), opt.out_dir, jobs, !opt.quiet, opt.measure, !opt.no_logs);
+  if (!measured) return fail(measured.error().message);
+  ScanResults r{values.value(), std::move(runs).value(), std::move(measured).value()};
   const std::string per_run = opt.out_dir + "/scan.csv", aggregate = opt.out_dir + "/scan-aggregate.csv";
   if (Status s = write_scan_csv(r, per_run, aggregate); !s) return fail(s.error().message);
   print_scan_table(r, opt.param, metric);
   std::printf("wrote %s (one row per run), %s (per value)\n", per_run.c_str(), aggregate.c_str());
   if (opt.plot.empty()) return 0;
-  if (Status s = tools::run_plot_script(
-          "plot_crater.py", {"scan", aggregate, opt.plot, "--metric", opt.metric, "--param", opt.param});
+  if (Status s = tools::run_plot_script_to(
+          "plot_crater.py", {"scan", aggregate, opt.plot, "--metric", opt.metric, "--param", opt.param}, opt.plot);
       !s)
     return fail(s.error().message);
   std::printf("wrote %s (figure)\n", opt.plot.c_str());
@@ -136,6 +128,9 @@ Command add_scan_command(CLI::App& app) {
   cmd->add_option("--metric", opt->metric, "the metric the table and figure show: count, depth (default), width, "
                                            "area, or another column of scan.csv");
   cmd->add_option("--plot", opt->plot, "draw the metric against the parameter with error bars (.png or .svg)");
+  cmd->add_flag("--no-logs", opt->no_logs,
+                "keep only the results (CSV files, run summaries, figure): each run's log is measured as soon as "
+                "the run ends, then deleted");
   cmd->add_flag("-q,--quiet", opt->quiet, "no progress messages");
   add_measure_options(*cmd, opt->measure);
   return [opt] { return run_scan(*opt); };

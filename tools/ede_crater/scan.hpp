@@ -24,10 +24,16 @@ struct ScanRun {
 };
 
 // Runs every scene with ede::Simulation, writing DIR/<name>.ede (the log) and DIR/<name>.txt (the run's
-// summary), at most `jobs` at once on std::thread workers. After a run fails no further run starts; the
-// error is the first failed run's (in run order). A run that stalls (inelastic collapse) has a complete
-// log and is not a failure.
-Status run_scans(const std::vector<ScanRun>& runs, const std::string& dir, std::size_t jobs, bool progress);
+// summary), at most `jobs` at once on std::thread workers, and measures each log as soon as its run ended
+// (measure_log, as `ede-crater LOG` does); without keep_logs the log is deleted once measured, so a scan
+// needs the disk of `jobs` logs, not of all of them. After a run fails no further run starts; the error is
+// the first failed run's (in run order). A run that stalls or collapses has a complete log and is not a
+// failure: its status goes into the table, marked (run_suspect).
+Result<std::vector<MeasuredLog>> run_scans(const std::vector<ScanRun>& runs, const std::string& dir, std::size_t jobs,
+                                           bool progress, const MeasureOptions& measure, bool keep_logs);
+
+// A run whose end makes its crater doubtful: inelastic collapse, a non-finite number, a log cut short.
+bool run_suspect(const std::string& run_status);
 
 // What the table is made of: the values as typed, the runs, each run's measurement (same order).
 struct ScanResults {

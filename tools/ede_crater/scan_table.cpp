@@ -35,30 +35,39 @@ std::vector<CraterScanGroup> groups_of(const ScanResults& r) {
 // "t = a" or "t = a-b": the times the runs of one value were measured at.
 std::string time_range(double lo, double hi) { return "t = " + brief(lo) + (lo == hi ? "" : "-" + brief(hi)); }
 
+// Runs of value v whose end makes their crater doubtful (run_suspect).
+std::size_t suspect_runs(const ScanResults& r, std::size_t v) {
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < r.runs.size(); ++k) n += r.runs[k].value == v && run_suspect(r.measured[k].run_status);
+  return n;
+}
+
 }  // namespace
 
 Status write_scan_csv(const ScanResults& r, const std::string& per_run, const std::string& aggregate) {
   const std::vector<std::string>& names = crater_metric_names();
-  std::string s = "value,x,seed,log,run_status,time,time_source,energy_fraction";
+  std::string s = "value,x,seed,log,run_status,suspect,time,time_source,energy_fraction";
   for (const std::string& m : names) s += "," + m;
   s += "\n";
   for (std::size_t k = 0; k < r.runs.size(); ++k) {
     const ScanRun& run = r.runs[k];
     const CraterMeasurement& c = r.measured[k].crater;
     s += csv_field(r.values[run.value]) + "," + axis_cell(r.values[run.value]) + "," + std::to_string(run.seed) + "," +
-         csv_field(run.name + ".ede") + "," + csv_field(r.measured[k].run_status) + "," + exact(c.time) + "," +
+         csv_field(run.name + ".ede") + "," + csv_field(r.measured[k].run_status) + "," +
+         (run_suspect(r.measured[k].run_status) ? "1" : "0") + "," + exact(c.time) + "," +
          to_string(c.source) + "," + exact(c.energy_fraction);
     for (const double v : crater_metric_values(c)) s += "," + exact(v);
     s += "\n";
   }
   if (Status w = write_text_file(per_run, s); !w) return w;
 
-  std::string a = "value,x,n";
+  std::string a = "value,x,n,n_suspect";
   for (const std::string& m : names) a += "," + m + "_mean," + m + "_stderr";
   a += "\n";
   const std::vector<CraterScanGroup> groups = groups_of(r);
   for (std::size_t v = 0; v < r.values.size(); ++v) {
-    a += csv_field(r.values[v]) + "," + axis_cell(r.values[v]) + "," + std::to_string(groups[v].runs);
+    a += csv_field(r.values[v]) + "," + axis_cell(r.values[v]) + "," + std::to_string(groups[v].runs) + "," +
+         std::to_string(suspect_runs(r, v));
     for (const MeanAndError& m : groups[v].metrics) a += "," + exact(m.mean) + "," + exact_cell(m.error);
     a += "\n";
   }
@@ -76,10 +85,19 @@ void print_scan_table(const ScanResults& r, const std::string& param, std::size_
                              : g.at_log_end == 0 ? "energy fraction reached"
                                                  : std::to_string(g.at_log_end) + " of " + std::to_string(g.runs) +
                                                        " at the log's end";
-    std::printf("%-24s %4zu  %-12s +- %-12s  %s, %s\n", r.values[v].c_str(), m.n, brief(m.mean).c_str(),
+    const std::size_t suspect = suspect_runs(r, v);
+    std::printf("%-24s %4zu  %-12s +- %-12s  %s, %s%s\n", r.values[v].c_str(), m.n, brief(m.mean).c_str(),
                 std::isnan(m.error) ? "-" : brief(m.error).c_str(), when.c_str(),
-                time_range(g.first_time, g.last_time).c_str());
+                time_range(g.first_time, g.last_time).c_str(),
+                suspect ? ("  !! " + std::to_string(suspect) + " run(s) suspect").c_str() : "");
   }
+  std::size_t total = 0;
+  for (std::size_t v = 0; v < r.values.size(); ++v) total += suspect_runs(r, v);
+  if (total)
+    std::printf("!! %zu run(s) ended in inelastic collapse, with a non-finite number or unfinished (scan.csv: suspect, "
+                "run_status); their craters are not comparable. Fix: enable the TC model (--set physics.tc=1e-6) "
+                "and scan again.\n",
+                total);
 }
 
 }  // namespace ede::crater_tool

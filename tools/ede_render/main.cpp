@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <string>
 
+#include "tool_main.hpp"
 #include "command_line.hpp"
 #include "render.hpp"
 
@@ -50,7 +51,7 @@ int check_and_run(const Options& opt, const CLI::App& app) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+static int run_main(int argc, char** argv) {
   CLI::App app{"ede-render: draw the state of a logged run (PNG or SVG), or a movie of it (PNG frames or MP4)"};
   Options opt;
   app.add_option("log", opt.log, "event log written by ede-sim -o")->required();
@@ -84,3 +85,6 @@ int main(int argc, char** argv) {
   opt.colour = colour == "speed" ? ColourBy::Speed : colour == "displacement" ? ColourBy::Displacement : ColourBy::Species;
   return check_and_run(opt, app);
 }
+
+// Out of memory, a stray exception and a failed stdout become one message and a documented status.
+int main(int argc, char** argv) { return ede::tools::run_tool("ede-render", run_main, argc, argv); }

@@ -7,7 +7,9 @@
 
 #include "colouring.hpp"
 #include "draw.hpp"
+#include "file_checks.hpp"
 #include "frames.hpp"
+#include "output_file.hpp"
 #include "render.hpp"
 
 namespace ede::render {
@@ -24,7 +26,15 @@ int render_still(const Options& opt) {
   auto marked = marked_disks(f, opt.mark_species);
   if (!marked) return fail(opt.log + ": --mark-species: " + marked.error().message);
   const double scale = opt.max_displacement.value_or(displacement_scale(f, marked.value()));
-  if (Status s = write_frame(opt.output, *format, f, opt, marked.value(), scale); !s) return fail(s.error().message);
+  // Drawn to a temporary beside the target (same extension: cairo picks the format from the name) and
+  // renamed into place when complete; never over the log it was drawn from.
+  if (Status s = tools::check_not_an_input(opt.output); !s) return fail(s.error().message);
+  const std::string temp = tools::temporary_name(opt.output);
+  if (Status s = write_frame(temp, *format, f, opt, marked.value(), scale); !s) {
+    std::remove(temp.c_str());
+    return fail("cannot write '" + opt.output + "' (drawn to " + temp + " first): " + s.error().message);
+  }
+  if (Status s = tools::commit_temporary(temp, opt.output); !s) return fail(s.error().message);
   std::printf("wrote %s (t = %s, %zu disks)\n", opt.output.c_str(), frames.value().time_text(f.time).c_str(), f.size());
   return 0;
 }

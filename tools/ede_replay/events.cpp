@@ -10,6 +10,7 @@
 // until one is later than T1: the cost is the range, not the log.
 #include <optional>
 
+#include "output_file.hpp"
 #include "replay_tool.hpp"
 
 namespace ede::replay_tool {
@@ -66,18 +67,18 @@ int run_events(const EventsOptions& opt) {
   if (!range) return fail(range.error().message);
   if (range.value().from_time && range.value().to_time && *range.value().to_time < *range.value().from_time)
     return usage_error("events: --to " + opt.to + " is before --from " + opt.from);
-  std::FILE* out = opt.output.empty() ? stdout : std::fopen(opt.output.c_str(), "w");
-  if (!out) return fail("cannot write '" + opt.output + "'");
+  tools::Output output(opt.output);  // a temporary renamed into place once complete; stdout without -o
+  std::FILE* out = output.file();
+  if (!out) return fail(output.error());
   std::fputs(opt.full ? "index,time,kind,i,j,vix,viy,vjx,vjy,xi,yi,xj,yj,vix_before,viy_before,vjx_before,vjy_before\n"
                       : "index,time,kind,i,j,vix,viy,vjx,vjy\n",
              out);
   const Status s = log.value().for_each_event(range.value(), [&](const Event& e) {
     std::fputs(row(log.value(), e, opt.full).c_str(), out);
-    return true;
+    return std::ferror(out) == 0;  // a full disk ends the walk; close() names the file
   });
-  const bool write_failed = std::ferror(out) != 0 || (out == stdout ? std::fflush(out) : std::fclose(out)) != 0;
   if (!s) return fail(s.error().message);
-  if (write_failed) return fail("error while writing '" + (opt.output.empty() ? "<stdout>" : opt.output) + "'");
+  if (Status c = output.close(); !c) return fail(c.error().message);
   return 0;
 }
 

@@ -15,10 +15,11 @@
 #include <string>
 #include <vector>
 
+#include "tool_main.hpp"
 #include "command_line.hpp"
 #include "replay_tool.hpp"
 
-int main(int argc, char** argv) {
+static int run_main(int argc, char** argv) {
   using namespace ede::replay_tool;
   CLI::App app{
       "ede-replay: read an ede event log: the state at any time, a summary, the events, a check "
@@ -36,3 +37,6 @@ int main(int argc, char** argv) {
     if (app.got_subcommand(name)) return run();
   return usage_error("give a log, or a subcommand");
 }
+
+// Out of memory, a stray exception and a failed stdout become one message and a documented status.
+int main(int argc, char** argv) { return ede::tools::run_tool("ede-replay", run_main, argc, argv); }

@@ -6,6 +6,7 @@
 // same time.
 #include <optional>
 
+#include "output_file.hpp"
 #include "replay_tool.hpp"
 
 namespace ede::replay_tool {
@@ -32,11 +33,10 @@ int run_state(const StateOptions& opt) {
   if (!log) return fail(log.error().message);
   auto state = state_of(log.value(), opt);
   if (!state) return fail(state.error().message);
-  if (opt.output.empty()) {
-    write_state_csv(stdout, state.value());
-    return std::fflush(stdout) == 0 && !std::ferror(stdout) ? 0 : fail("error while writing <stdout>");
-  }
-  if (Status s = write_state_csv(opt.output, state.value()); !s) return fail(s.error().message);
+  tools::Output out(opt.output);  // a temporary renamed into place once complete; stdout without -o
+  if (!out.file()) return fail(out.error());
+  write_state_csv(out.file(), state.value());
+  if (Status s = out.close(); !s) return fail(s.error().message);
   return 0;
 }
 

@@ -9,10 +9,11 @@
 #include <string>
 #include <vector>
 
+#include "tool_main.hpp"
 #include "command_line.hpp"
 #include "stats_tool.hpp"
 
-int main(int argc, char** argv) {
+static int run_main(int argc, char** argv) {
   CLI::App app{"ede-stats: statistics and figures from an ede event log"};
   app.require_subcommand(1);
   using namespace ede::stats_tool;
@@ -27,3 +28,6 @@ int main(int argc, char** argv) {
     if (app.got_subcommand(name)) return run();
   return 2;
 }
+
+// Out of memory, a stray exception and a failed stdout become one message and a documented status.
+int main(int argc, char** argv) { return ede::tools::run_tool("ede-stats", run_main, argc, argv); }

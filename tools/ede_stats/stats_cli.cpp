@@ -93,7 +93,7 @@ int write_csv_and_plot(const CsvAndFigure& f) {
       return fail("cannot write a temporary file for the figure's data");
     args[1 + f.extra_csv_arg] = extra->path();
   }
-  if (Status p = tools::run_plot_script(f.script, args); !p) return fail(p.error().message);
+  if (Status p = tools::run_plot_script_to(f.script, args, f.plot); !p) return fail(p.error().message);
   if (!f.figure_label.empty()) std::printf("%s%s\n", f.figure_label.c_str(), f.plot.c_str());
   return 0;
 }

@@ -109,6 +109,13 @@ def plot_scan(a):
     fig, ax = ede_style.figure()
     ax.errorbar(x, y, yerr=e, fmt="o-", color=COLOURS[0], capsize=4, linewidth=1.4,
                 label="mean ± standard error (n = %s)" % "/".join(sorted({r["n"] for r in rows})))
+    # Values with runs that ended in inelastic collapse, with a non-finite number or unfinished (the
+    # n_suspect column): a red ring and a note, so they are never read as good points beside the others.
+    suspect = [k for k in order if int(rows[k].get("n_suspect", "0") or 0) > 0]
+    if suspect:
+        ax.plot([xs[k] for k in suspect], [number(rows[k][mean_key]) for k in suspect], "o", markersize=13,
+                markerfacecolor="none", markeredgecolor="#c0392b", markeredgewidth=1.6,
+                label="includes runs ended by inelastic collapse or unfinished (scan.csv run_status)")
     if not numeric:
         ax.set_xticks(x, [rows[k]["value"] for k in order])
     elif min(x) > 0 and max(x) >= 10 * min(x):

@@ -54,6 +54,8 @@ enum class RunStatus {
   NoMoreEvents,       // nothing will ever happen again (every disk at rest, or moving freely forever)
   Stalled,            // time stopped advancing: inelastic collapse; the run's message says what to do
   CameToRest,         // an inelastic run cooled below the speeds the scalar type resolves; see the message
+  NonFinite,          // a NaN or infinity appeared (overflow): the run stopped at that event; see the message
+  Collapsed,          // inelastic collapse: a disk slowed below resolvable speeds while much energy remains
 };
 const char* to_string(RunStatus);
 bool is_finished(RunStatus);  // anything but Running

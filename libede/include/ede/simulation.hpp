@@ -21,6 +21,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "ede/error.hpp"
 #include "ede/events.hpp"
@@ -66,7 +67,9 @@ struct Progress {
 };
 
 struct SimulationOptions {
-  std::string log_path;  // record every event here ("" = no log); an existing file is replaced
+  // Record every event here ("" = no log); an existing file is replaced, unless another run is writing it
+  // or an ede tool is reading it (both hold a lock on it): then create() fails, naming the file.
+  std::string log_path;
   // Called every 2^18 events or so (a few times a second) from run() and advance_to().
   std::function<void(const Progress&)> progress;
 };
@@ -132,5 +135,16 @@ class Simulation {
 
 // Peak resident memory of this process so far (getrusage).
 std::uint64_t peak_rss_bytes();
+
+// Roughly the peak memory a run of `scene` takes (engine, setup, and with a log its writer), from the
+// bytes per disk measured at 10^6 disks (docs/reliability.md): for refusing a run that cannot fit before
+// it starts, with the number in the message.
+inline constexpr std::uint64_t kBytesPerDiskWithLog = 400, kBytesPerDiskNoLog = 300;
+std::uint64_t estimated_memory_bytes(const Scene& scene, bool with_log);
+
+// Doubts about a valid scene (a run that may take very long, ...): one sentence each, naming the file, the
+// key and what would be faster. The tools print them as warnings and go on. Empty for most scenes.
+// (What can never work is refused by load_scene_file or Simulation::create instead.)
+std::vector<std::string> scene_warnings(const Scene& scene);
 
 }  // namespace ede

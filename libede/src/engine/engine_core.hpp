@@ -711,6 +711,9 @@ class Engine final : public EngineApi<T> {
     const T speed = std::max(ede::abs(d.vx), ede::abs(d.vy));
     if (speed != T(0) && speed < kSlowestSpeed && too_slow_ < 0) too_slow_ = i;
   }
+  // Above this share of the initial energy, a disk too slow to resolve means collapse, not rest (a gas
+  // cooled to such speeds keeps ~1e-30 of its energy in float, ~1e-290 in double).
+  static constexpr double kCollapseEnergyFraction = 1e-6;
   static inline const T kSlowestSpeed = ede::sqrt(scalar_limits<T>::min() / scalar_limits<T>::epsilon());
 
   // Inelastic collapse shows as ever more events at one and the same time; past the limit we stop.
@@ -743,12 +746,26 @@ class Engine final : public EngineApi<T> {
     if constexpr (kDissipative)
       if (too_slow_ >= 0) {
         const Disk<T>& slow = p_.disk[too_slow_];  // its velocity is the one it left the collision with
+        const double left = kinetic_energy(p_) / ke0_;
         std::ostringstream m;
         m << "disk " << too_slow_ << " left a collision at t = " << double(now_) << " with speed "
           << double(std::max(ede::abs(slow.vx), ede::abs(slow.vy))) << ", below " << double(kSlowestSpeed)
-          << ", the slowest speed whose square the scalar type holds to full precision: the run has cooled "
-             "to rest as far as it can tell (kinetic energy "
-          << kinetic_energy(p_) / ke0_
+          << ", the slowest speed whose square the scalar type holds to full precision";
+        // A gas cooled to rest has (almost) no energy left; a disk this slow beside a sizeable energy is
+        // one caught in a cluster colliding ever more often: inelastic collapse, not rest.
+        if (left > kCollapseEnergyFraction) {
+          m << ", while " << 100 * left
+            << "% of the initial kinetic energy remains: inelastic collapse (disks in a cluster colliding ever "
+               "faster and ever slower at one place). ";
+          if (tc_model())
+            m << "Increase physics.tc (now " << opt_.physics.tc << ").";
+          else
+            m << "Enable the TC model: physics.tc > 0, e.g. 1e-6, two orders of magnitude below the typical time "
+                 "between a disk's collisions (docs/crater.md), or raise the restitution.";
+          stall_message_ = m.str();
+          return RunStatus::Collapsed;
+        }
+        m << ": the run has cooled to rest as far as it can tell (kinetic energy " << left
           << " of the initial), and contact times would no longer be exact. Stop earlier with "
              "stop.energy_fraction or stop.time.";
         stall_message_ = m.str();

@@ -29,6 +29,8 @@ const char* to_string(RunStatus s) {
     case RunStatus::NoMoreEvents: return "no more events (nothing will collide again)";
     case RunStatus::Stalled: return "stalled (inelastic collapse)";
     case RunStatus::CameToRest: return "came to rest (speeds below what the scalar type resolves)";
+    case RunStatus::NonFinite: return "stopped: a non-finite number (NaN or infinity) appeared";
+    case RunStatus::Collapsed: return "inelastic collapse (a cluster slowed below resolvable speeds)";
   }
   return "?";
 }

@@ -2,11 +2,14 @@
 #include "log/record_writer.hpp"
 
 #include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 #include <zstd.h>
 
 #include <cerrno>
 #include <cstring>
+#include <new>
 
 namespace ede {
 
@@ -28,15 +31,35 @@ std::string write_all(int fd, const unsigned char* p, std::size_t n) {
 }  // namespace
 
 RecordWriter::RecordWriter(const std::string& path, std::uint64_t start_offset, int zstd_level)
-    : level_(zstd_level), offset_(start_offset) {
-  const int flags = start_offset == 0 ? (O_WRONLY | O_CREAT | O_TRUNC) : O_WRONLY;
-  fd_ = ::open(path.c_str(), flags | O_CLOEXEC, 0644);
+    : path_(path), level_(zstd_level), offset_(start_offset) {
+  // Opened without O_TRUNC and locked before anything is cut: a second writer of the same path (another
+  // ede-sim -o, a --resume of a log still being written) is refused without touching the first's bytes.
+  fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
   if (fd_ < 0) {
     error_ = "cannot open '" + path + "' for writing: " + std::strerror(errno);
     return;
   }
-  if (start_offset != 0 &&
-      (::ftruncate(fd_, off_t(start_offset)) != 0 || ::lseek(fd_, off_t(start_offset), SEEK_SET) < 0)) {
+  struct stat st {};
+  if (::fstat(fd_, &st) == 0 && !S_ISREG(st.st_mode)) {
+    error_ = "cannot write the log to '" + path +
+             "': it is not a regular file (a device or a pipe); a log must be a file, which ede-sim --resume and "
+             "the readers read back. Fix: give a file name.";
+    ::close(fd_);
+    fd_ = -1;
+    return;
+  }
+  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    const int err = errno;
+    error_ = err == EWOULDBLOCK
+                 ? "'" + path + "' is being written by another process (an ede-sim holds its lock) or read by "
+                   "another ede tool: a log is written by one run and replaced by none while it is read. Fix: give "
+                   "this run another -o, or wait for the other to finish."
+                 : "cannot lock '" + path + "' for writing: " + std::strerror(err);
+    ::close(fd_);
+    fd_ = -1;
+    return;
+  }
+  if (::ftruncate(fd_, off_t(start_offset)) != 0 || ::lseek(fd_, off_t(start_offset), SEEK_SET) < 0) {
     error_ = "cannot cut '" + path + "' at byte " + std::to_string(start_offset) + ": " + std::strerror(errno);
     return;
   }
@@ -96,7 +119,8 @@ std::string RecordWriter::finish() {
     worker_.join();
   }
   if (fd_ >= 0) {
-    if (::close(fd_) != 0 && error_.empty()) error_ = std::string("closing the log: ") + std::strerror(errno);
+    if (error_.empty() && ::fsync(fd_) != 0) error_ = "syncing '" + path_ + "' to disk: " + std::strerror(errno);
+    if (::close(fd_) != 0 && error_.empty()) error_ = "closing '" + path_ + "': " + std::strerror(errno);
     fd_ = -1;
   }
   if (zstd_context_) {
@@ -118,7 +142,13 @@ void RecordWriter::work() {
       busy_ = true;
     }
     const std::uint64_t at = offset_;
-    const std::string problem = error_.empty() ? write_job(job) : std::string();
+    std::string problem;
+    if (error_.empty()) try {
+        problem = write_job(job);
+      } catch (const std::bad_alloc&) {
+        problem = "out of memory while compressing a record of '" + path_ + "' (" +
+                  std::to_string(job.bytes.size()) + " bytes)";
+      }
     {
       std::lock_guard lock(mutex_);
       if (!job.raw) offsets_.push_back(at);
@@ -134,7 +164,7 @@ std::string RecordWriter::write_job(Job& job) {
   if (job.raw) {
     const std::string e = write_all(fd_, job.bytes.data(), job.bytes.size());
     offset_ += job.bytes.size();
-    return e.empty() ? e : "writing the log: " + e;
+    return e.empty() ? e : "writing '" + path_ + "': " + e;
   }
   auto* cctx = static_cast<ZSTD_CCtx*>(zstd_context_);
   std::vector<unsigned char> out(logfmt::kRecordHeaderSize + ZSTD_compressBound(job.bytes.size()));
@@ -145,7 +175,11 @@ std::string RecordWriter::write_job(Job& job) {
   logfmt::encode_record_header(job.header, out.data());
   const std::string e = write_all(fd_, out.data(), logfmt::kRecordHeaderSize + n);
   offset_ += logfmt::kRecordHeaderSize + n;
-  return e.empty() ? e : "writing the log: " + e;
+  if (!e.empty()) return "writing '" + path_ + "': " + e;
+  // A resumable keyframe is where ede-sim --resume restarts: make it durable (a kill needs no sync, the
+  // page cache survives it; a power cut does not). Once per keyframe, on this thread: the run never waits.
+  if (job.header.resumable && ::fdatasync(fd_) != 0) return "syncing '" + path_ + "' to disk: " + std::strerror(errno);
+  return {};
 }
 
 }  // namespace ede

@@ -6,7 +6,12 @@
 // record is written with one write(2) of header + payload: a run killed at any moment leaves whole
 // records followed by at most one cut record, which readers detect. The queue is bounded (the event loop
 // waits if the worker falls behind), so memory stays bounded. I/O errors are latched and reported by
-// finish() and error(): the event loop is never interrupted by an exception.
+// finish() and error(): the event loop is never interrupted by an exception. The file is locked (flock,
+// exclusive) from open to close, so a second writer of the same path is refused; the lock dies with the
+// process, so a killed run's log can be resumed at once. Resumable keyframes are fdatasync'ed, and the
+// file is fsync'ed before close; every write, sync and close is checked and its error names the file.
+// Rejected: write-to-temporary-then-rename for the log: ede-sim --resume continues the log in place, so a
+// killed run's records must be at the path the user gave (a temporary would hide them under another name).
 // Rejected: compressing on the simulation thread (measured: zstd at level 3 costs as much per event as
 // the simulation at small N) and zstd's own multi-threading (its output depends on the job split).
 #pragma once
@@ -55,6 +60,7 @@ class RecordWriter {
   void work();
   std::string write_job(Job& job);
 
+  std::string path_;  // for messages
   int fd_ = -1;
   int level_;
   std::uint64_t offset_;

@@ -1,7 +1,10 @@
 // setup_new_run, setup_resumed_run and prepare_resumption; see run_setup.hpp.
 #include "run/run_setup.hpp"
 
+#include <optional>
+
 #include "replay/replay.hpp"
+#include "run/run_checks.hpp"
 #include "setup/setup.hpp"
 
 namespace ede {
@@ -9,6 +12,7 @@ namespace ede {
 Result<RunSetup> setup_new_run(const Scene& scene) {
   auto initial = build_initial_state(scene);
   if (!initial) return initial.error();
+  if (Status s = check_run_can_finish(scene, initial.value()); !s) return s.error();
   RunSetup r{scene, std::move(initial).value(), {}, nullptr};
   r.options = engine_options_from(r.scene, r.initial.size());
   return r;
@@ -33,15 +37,22 @@ Result<RunSetup> setup_resumed_run(const std::string& path) {
   return r;
 }
 
+// From the last resumable keyframe; when that one cannot be read back (damaged), from the one before it,
+// and so on: a resume from an earlier keyframe redoes more events and still writes the same bytes.
 template <class T>
 Result<Resumption<T>> prepare_resumption(const std::shared_ptr<LogReader>& log) {
-  auto k = log->last_resumable_keyframe();
-  if (!k) return k.error();
+  auto last = log->last_resumable_keyframe();
+  if (!last) return last.error();
   auto replay = Replay<T>::create(log);
   if (!replay) return replay.error();
-  auto point = replay.value()->resume_point(k.value());
-  if (!point) return point.error();
-  return Resumption<T>{std::move(point).value(), continuation_from(*log, k.value())};
+  std::optional<Error> first_error;
+  for (std::size_t k = last.value() + 1; k-- > 0;) {
+    if (!log->keyframes()[k].resumable) continue;
+    auto point = replay.value()->resume_point(k);
+    if (point) return Resumption<T>{std::move(point).value(), continuation_from(*log, k)};
+    if (!first_error) first_error = point.error();
+  }
+  return *first_error;
 }
 
 template Result<Resumption<float>> prepare_resumption<float>(const std::shared_ptr<LogReader>&);

@@ -41,6 +41,7 @@ struct Simulation::Impl {
   double setup_seconds = 0, wall_seconds = 0;
   std::uint64_t events_before = 0;  // resumed: events processed before this process took the run up
   std::uint64_t collisions_before = 0;
+  std::string write_error;  // the log's first write error: the run stopped there
   bool closed = false;
   std::optional<Status> close_result;
 };

@@ -1,10 +1,17 @@
 // SimulationOf<T>: a run in scalar type T behind Simulation::Impl (simulation_impl.hpp).
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 
 #include "core/state_csv.hpp"
 #include "core/state_of.hpp"
+#include "run/finite_guard.hpp"
 #include "run/progress_fraction.hpp"
 #include "run/run_summary.hpp"
 #include "run/simulation_impl.hpp"
@@ -25,10 +32,13 @@ constexpr int kSlicesPerProgress = 4;
 template <class T>
 class SimulationOf final : public Simulation::Impl {
  public:
-  SimulationOf(RunSetup setup, std::unique_ptr<EngineApi<T>> engine, LogWriterFor<T> log)
+  SimulationOf(RunSetup setup, std::unique_ptr<EngineApi<T>> engine, LogWriterFor<T> log, std::uint64_t first_event)
       : setup_(std::move(setup)), engine_(std::move(engine)), log_(std::move(log)) {
-    if constexpr (kLogScalar<T>)
-      if (log_) engine_->add_sink(log_.get());  // first, as DESIGN.md orders the sinks
+    Sink<T>* log_sink = nullptr;
+    if constexpr (kLogScalar<T>) log_sink = log_.get();
+    // The guard passes every finite outcome on to the log (first, as DESIGN.md orders the sinks).
+    guard_ = std::make_unique<FiniteGuard<T>>(log_sink, first_event);
+    engine_->add_sink(guard_.get());
     for (std::size_t i = 0; i < setup_.initial.size(); ++i) {
       px0_ += setup_.initial.mass[i] * setup_.initial.vx[i];
       py0_ += setup_.initial.mass[i] * setup_.initial.vy[i];
@@ -39,12 +49,20 @@ class SimulationOf final : public Simulation::Impl {
     const auto start = std::chrono::steady_clock::now();
     std::uint64_t left = max_events;
     int slices = 0;
+    if (is_finished(status) || !write_error.empty()) return status;
     RunStatus s = RunStatus::Running;
     while (left > 0 && !interrupt_requested.load(std::memory_order_relaxed)) {
       const std::uint64_t n = std::min(left, kSlice);
       const std::uint64_t before = engine_->counts().events() + engine_->counts().of(EventKind::Sample);
       s = until ? engine_->run_until(T(*until), n) : engine_->run(n);
+      if (guard_->tripped()) {
+        s = RunStatus::NonFinite;
+        break;
+      }
       if (s != RunStatus::Running) break;
+      // A log that can no longer be written (a full disk) stops the run: going on would compute events
+      // nobody can keep. The log keeps every complete record; close() reports the error.
+      if (write_error = log_error(); !write_error.empty()) break;
       const std::uint64_t done = engine_->counts().events() + engine_->counts().of(EventKind::Sample) - before;
       if (until && done < n) break;  // paused at `until`
       left -= std::min(left, n);
@@ -58,7 +76,9 @@ class SimulationOf final : public Simulation::Impl {
 
   Time time() const override { return Time(engine_->time()); }
   EventCounts counts() const override { return engine_->counts(); }
-  std::string message() const override { return engine_->stall_message(); }
+  std::string message() const override {
+    return guard_->tripped() ? guard_->message() : engine_->stall_message();
+  }
 
   State state() const override {
     return state_of(engine_->particles(), engine_->time(), engine_->counts().events(), setup_.scene.lx,
@@ -69,7 +89,10 @@ class SimulationOf final : public Simulation::Impl {
     RunSummary s = summarize(*engine_, px0_, py0_);
     s.scene = setup_.scene.source_name;
     s.seed = setup_.scene.seed;
-    s.status = was_interrupted && status == RunStatus::Running ? "interrupted" : to_string(status);
+    s.status = !write_error.empty()                                ? "stopped: the event log could not be written"
+               : was_interrupted && status == RunStatus::Running ? "interrupted"
+                                                                 : to_string(status);
+    if (guard_->tripped()) s.stall_message = guard_->message();
     s.wall_seconds = wall_seconds;
     s.setup_seconds = setup_seconds;
     s.events_before = events_before;
@@ -77,8 +100,24 @@ class SimulationOf final : public Simulation::Impl {
     return s;
   }
 
+  // Through a temporary file renamed into place once complete (a full disk leaves the old file, never a
+  // short one under the final name); a device or FIFO is written directly.
   Status write_state_csv(const std::string& path) const override {
-    return write_state_csv_file(path, engine_->particles(), engine_->time(), setup_.initial.species_names);
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+      return write_state_csv_file(path, engine_->particles(), engine_->time(), setup_.initial.species_names);
+    const std::string temp = path + ".tmp-" + std::to_string(::getpid());
+    Status s = write_state_csv_file(temp, engine_->particles(), engine_->time(), setup_.initial.species_names);
+    if (!s) {
+      ::unlink(temp.c_str());
+      return Error{"cannot write the final state to '" + path + "': " + s.error().message, ErrorKind::Io};
+    }
+    if (std::rename(temp.c_str(), path.c_str()) != 0) {
+      const std::string why = std::strerror(errno);
+      ::unlink(temp.c_str());
+      return Error{"cannot put the final state in place as '" + path + "': " + why, ErrorKind::Io};
+    }
+    return Ok{};
   }
 
   Status close_log() override {
@@ -92,6 +131,11 @@ class SimulationOf final : public Simulation::Impl {
       if (!error.empty()) return Error{"the event log " + log_path + " is incomplete: " + error, ErrorKind::Io};
     }
     return Ok{};
+  }
+
+  std::string log_error() const {
+    if constexpr (kLogScalar<T>) return log_ ? log_->error() : std::string();
+    return {};
   }
 
   std::uint64_t logged_events() const {
@@ -113,6 +157,7 @@ class SimulationOf final : public Simulation::Impl {
   RunSetup setup_;
   std::unique_ptr<EngineApi<T>> engine_;
   LogWriterFor<T> log_;
+  std::unique_ptr<FiniteGuard<T>> guard_;
   double px0_ = 0, py0_ = 0;
 };
 
@@ -141,8 +186,9 @@ Result<std::unique_ptr<Simulation::Impl>> make_in(RunSetup setup, const Simulati
   }
   const std::uint64_t before = resumption ? resumption->point.counts.events() : 0;
   const std::uint64_t collisions_before = resumption ? resumption->point.counts.collisions() : 0;
+  const std::uint64_t first_logged = resumption ? resumption->continuation.events_before : 0;
   const Scene scene = setup.scene;
-  auto impl = std::make_unique<SimulationOf<T>>(std::move(setup), std::move(engine).value(), std::move(log));
+  auto impl = std::make_unique<SimulationOf<T>>(std::move(setup), std::move(engine).value(), std::move(log), first_logged);
   impl->scene = scene;
   impl->options = options;
   impl->log_path = log_path;

@@ -93,7 +93,18 @@ PhysicsSpec read_physics(const Reader& top) {
   out.tc = p.number("tc", Bounds::non_negative(), "use 0 (TC model off) or a positive time").value_or(0);
   if (const auto g = p.numbers("gravity", 2, "[gx, gy]", Bounds::any())) out.gravity = {(*g)[0], (*g)[1]};
   if (const toml::array* list = p.array("pairs"))
-    for (std::size_t i = 0; i < list->size(); ++i) out.pairs.push_back(read_pair(*list->get(i), i, p));
+    for (std::size_t i = 0; i < list->size(); ++i) {
+      const PairRestitution pair = read_pair(*list->get(i), i, p);
+      for (std::size_t k = 0; k < out.pairs.size(); ++k) {
+        const PairRestitution& q = out.pairs[k];
+        if ((q.a == pair.a && q.b == pair.b) || (q.a == pair.b && q.b == pair.a))
+          p.fail_item("pairs", i,
+                      "the pair [\"" + pair.a + "\", \"" + pair.b + "\"] was already given by physics.pairs[" +
+                          std::to_string(k) + "]; one would silently override the other",
+                      "keep one [[physics.pairs]] entry per pair of species");
+      }
+      out.pairs.push_back(pair);
+    }
   return out;
 }
 
@@ -125,8 +136,11 @@ LogSpec read_log(const Reader& top) {
   return out;
 }
 
+// Letters of any script (a non-ASCII byte: toml++ has checked the string is UTF-8, and names go to CSV
+// and the log as UTF-8 unchanged), digits, '_' and '-'.
 bool is_name_char(char c) {
-  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-' ||
+         static_cast<unsigned char>(c) >= 0x80;
 }
 
 std::string read_name(const Reader& sp) {
@@ -137,7 +151,7 @@ std::string read_name(const Reader& sp) {
     if (!is_name_char(c)) {
       sp.fail("name",
               "invalid character " + user_quoted(std::string(1, c)) + " in the name " + user_quoted(*name),
-              "use letters, digits, '_' and '-' only");
+              "use letters (of any script), digits, '_' and '-' only");
     }
   }
   return *name;
@@ -430,6 +444,16 @@ std::vector<ActionSpec> read_actions(const Reader& top) {
   return out;
 }
 
+// No collision of this scene can lose energy (walls do not count in a periodic box).
+bool elastic_in_effect(const Scene& scene) {
+  const PhysicsSpec& ph = scene.physics;
+  bool all = ph.restitution == 1;
+  for (const PairRestitution& p : ph.pairs) all = all && p.value == 1;
+  if (scene.boundary == BoundaryKind::Walls)
+    for (int w = 0; w < 4; ++w) all = all && ph.wall(w) == 1;
+  return all;
+}
+
 // Rules that span tables: pair restitution names real species; gravity needs walls (in a periodic box
 // everything would fall forever) and cannot stop on kinetic energy (it changes between collisions).
 void check_physics(const Reader& top, const Scene& scene) {
@@ -451,6 +475,12 @@ void check_physics(const Reader& top, const Scene& scene) {
     top.section("stop").fail("energy_fraction",
                              "with gravity the kinetic energy changes between collisions, so it cannot stop a run",
                              "stop on time (stop.time) or on events");
+  const StopSpec& st = scene.stop;
+  if (st.energy_fraction && !st.time && !st.events && !st.collisions_per_particle && elastic_in_effect(scene))
+    top.section("stop").fail("energy_fraction",
+                             "every collision is elastic (restitution 1 for pairs and walls), so the kinetic energy "
+                             "never falls and the run would never end",
+                             "make the collisions inelastic (physics.restitution < 1), or stop on time or events");
 }
 
 Scene scene_from_tree(const toml::table& root, const Origin& origin) {
@@ -509,21 +539,55 @@ Result<Scene> parse_scene_text(const std::string& text, const std::string& sourc
   }
 }
 
-Result<Scene> load_scene_file(const std::string& path, const std::vector<Override>& overrides) {
+// The largest scene file read: explicit positions for 10^6 disks take ~50 MB of TOML; anything past this
+// is not a scene (a device, a log, a disk image) and is refused before it is read into memory.
+constexpr std::uint64_t kMaxSceneBytes = std::uint64_t(64) << 20;
+
+// The text of a scene file, refused with a message naming the file when it is not a regular file, too big,
+// or binary (a NUL byte: a log, an image, an executable). Read in one bounded read, so a file that grows
+// while being read (or a device that never ends) cannot take the memory.
+Result<std::string> read_scene_bytes(const std::string& path) {
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    return Error{path +
-                 ": error: this is a directory, not a scene file. Fix: give the path of a .toml file."};
-  }
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  if (in) text << in.rdbuf();
-  if (!in || in.bad()) {
-    const bool exists = std::filesystem::exists(path, ec);
+  const auto st = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(st)) {
+    const bool exists = std::filesystem::exists(std::filesystem::symlink_status(path, ec));
     return Error{path + ": error: cannot " + (exists ? "read" : "find") +
-                 " the scene file. Fix: check the path" + (exists ? " and the file's permissions." : ".")};
+                     " the scene file. Fix: check the path" + (exists ? " and the file's permissions." : "."),
+                 ErrorKind::Io};
   }
-  return parse_scene_text(text.str(), path, overrides);
+  if (std::filesystem::is_directory(st))
+    return Error{path + ": error: this is a directory, not a scene file. Fix: give the path of a .toml file."};
+  if (!std::filesystem::is_regular_file(st))
+    return Error{path + ": error: this is not a regular file (a device, a pipe or a socket), not a scene file. "
+                        "Fix: save the scene to a .toml file and give its path."};
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (!ec && size > kMaxSceneBytes)
+    return Error{path + ": error: the file has " + std::to_string(size) + " bytes, more than any scene (at most " +
+                 std::to_string(kMaxSceneBytes >> 20) +
+                 " MiB): is it a scene? Fix: give the .toml scene file (large explicit lists belong in fewer, "
+                 "placed disks)."};
+  std::ifstream in(path, std::ios::binary);
+  // One byte more than the size stat gave (and never more than the limit allows): a file growing while it
+  // is read is read up to there, never without bound.
+  std::string text(std::size_t(std::min<std::uintmax_t>(ec ? kMaxSceneBytes : size, kMaxSceneBytes)) + 1, '\0');
+  if (in) in.read(text.data(), std::streamsize(text.size()));
+  if (in.bad() || (!in && !in.eof()))
+    return Error{path + ": error: cannot read the scene file. Fix: check the file's permissions.", ErrorKind::Io};
+  text.resize(std::size_t(in.gcount()));
+  if (text.size() > kMaxSceneBytes)
+    return Error{path + ": error: the file is larger than any scene (more than " + std::to_string(kMaxSceneBytes >> 20) +
+                 " MiB). Fix: give the .toml scene file."};
+  if (const std::size_t nul = text.find('\0'); nul != std::string::npos)
+    return Error{path + ": error: byte " + std::to_string(nul) +
+                 " is a NUL: this is a binary file (an event log? an image?), not a TOML scene. Fix: give the "
+                 ".toml scene file; an event log is read by ede-replay, resumed by ede-sim --resume."};
+  return text;
+}
+
+Result<Scene> load_scene_file(const std::string& path, const std::vector<Override>& overrides) {
+  auto text = read_scene_bytes(path);
+  if (!text) return text.error();
+  return parse_scene_text(text.value(), path, overrides);
 }
 
 }  // namespace ede

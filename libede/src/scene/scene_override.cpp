@@ -82,7 +82,7 @@ class Applier {
       fail("empty key in " + user_quoted(part), "write keys as a.b.c and elements as species[1]");
     }
     for (char c : name) {
-      if (!is_key_char(c)) {
+      if (!is_key_char(c) && static_cast<unsigned char>(c) < 0x80) {  // UTF-8: a species named in another script
         fail("invalid character " + user_quoted(std::string(1, c)) + " in the key",
              "keys use letters, digits, '_' and '-'; elements are written species[1]");
       }
@@ -101,6 +101,17 @@ class Applier {
     }
   }
 
+  // Digits with an optional sign, point, exponent or underscores: a number, however badly formed.
+  static bool looks_numeric(std::string_view v) {
+    if (v.empty()) return false;
+    const char c = v.front() == '+' || v.front() == '-' ? (v.size() > 1 ? v[1] : 'x') : v.front();
+    if (!(c >= '0' && c <= '9') && c != '.') return false;
+    for (const char d : v)
+      if (!((d >= '0' && d <= '9') || d == '.' || d == 'e' || d == 'E' || d == '+' || d == '-' || d == '_'))
+        return false;
+    return true;
+  }
+
   toml::table parse_value(std::string_view value) const {
     try {
       toml::table holder = toml::parse("v = " + std::string(value), std::string_view("--set"));
@@ -111,6 +122,10 @@ class Applier {
         fail("the value is not valid TOML (" + std::string(e.description()) + ")",
              "check brackets, commas and quotes, e.g. --set 'box.size=[2.0, 1.0]'");
       }
+      if (looks_numeric(value))  // 1e400, 1_000_: meant as a number, so not taken for a word
+        fail("the value " + user_quoted(std::string(value)) + " is not a number a scene can hold (" +
+                 std::string(e.description()) + ")",
+             "give a finite number within the range of a double (about 1.8e308), e.g. 1e6");
     }
     toml::table holder;
     holder.insert("v", std::string(value));  // a bare word: scalar=float, boundary=periodic
