@@ -6,6 +6,7 @@
 //   ede-replay events LOG [--from T0] [--to T1] [-o FILE]   events as CSV (or --from-event/--to-event)
 //   ede-replay verify LOG                            re-run the logged scene and compare every event
 //   ede-replay diff A B                              the first event at which two logs differ
+//   ede-replay convert LOG -o OUT [--format-version 1|2]   the same log in another format version
 //
 // Thin: one file per subcommand, each parsing its options and calling libede (LogReader, Replay, the
 // engine for verify). A first argument that is not a subcommand makes the command `state`, so the common
@@ -26,7 +27,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   const std::vector<std::pair<std::string, Command>> commands = {
       {"state", add_state_command(app)},   {"info", add_info_command(app)}, {"events", add_events_command(app)},
-      {"verify", add_verify_command(app)}, {"diff", add_diff_command(app)},
+      {"verify", add_verify_command(app)}, {"diff", add_diff_command(app)}, {"convert", add_convert_command(app)},
   };
 
   // `ede-replay LOG --at T` is `ede-replay state LOG --at T`.

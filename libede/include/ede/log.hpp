@@ -127,6 +127,9 @@ class Log {
   // equal for logs of the same run whatever compiler or compression level wrote them. Replays the log.
   // The text names the hash: "xxh3-128:" and 32 hex digits.
   Result<std::string> content_digest() const;
+  // Writes this (complete) log again at `out_path` in format version 1 or 2 (the latest, smaller): the same
+  // header, events and keyframes, so every state read from the copy is bit-identical to this log's.
+  Status convert(const std::string& out_path, std::uint32_t format_version = 2) const;
 
   struct Impl;
   const Impl& impl() const { return *impl_; }
