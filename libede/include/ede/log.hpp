@@ -9,7 +9,9 @@
 // A log whose run was killed reads up to its last complete record (info().complete is false and
 // info().incomplete_reason says how far it goes). States are rebuilt by applying the logged events to the
 // nearest keyframe with the engine's own state-update functions: a seek costs one keyframe plus the
-// events since it, never the whole log, and no collision physics runs (except in verify(), whose job it is).
+// events since it, never the whole log, and the simulation never reruns (except in verify(), whose job it
+// is; format version 2 decodes each stored velocity and time as a residual against the collision rule's
+// and contact time's prediction, which is not a rerun: the stored residual has the last word).
 // A Log is cheap to copy (copies share the file); one thread at a time per copy.
 #pragma once
 
