@@ -6,6 +6,8 @@
 // and velocity is checked by the decoder; decoding must fail with a message or succeed, and an applied
 // event must leave a state of finite numbers or say it did not (replay then reports corruption).
 // Found: a huge but finite time made positions infinite without a word (now reported).
+// Both column encodings: the top bit of the second byte picks 2 (predicted times and velocities, against
+// a periodic unit box with one species) over 1.
 // The harness returns false on a violated check; the fuzz target traps on it, the test suite fails.
 #pragma once
 
@@ -24,6 +26,8 @@ inline bool fuzz_columns(const std::uint8_t* data, std::size_t size) {
   if (size < 8) return true;
   const std::size_t n = 2 + data[0] % 30;
   const std::uint32_t count = 1 + data[1] % 64;
+  const std::uint32_t encoding = (data[1] & 0x80) ? 2 : 1;
+  const auto physics = ede::EventPhysics<double>::box(1.0, 1.0, (data[0] & 0x80) != 0, 0.0, 0.0);
   ede::Particles<double> state;
   state.disk.assign(n, ede::Disk<double>{});
   state.mass.assign(n, 1.0);
@@ -45,7 +49,7 @@ inline bool fuzz_columns(const std::uint8_t* data, std::size_t size) {
     cols[c] = bytes + at;
     at += sizes[c];
   }
-  ede::ChunkDecoder<double> decoder(std::move(storage), cols, sizes, 0, count, n, 0.0);
+  ede::ChunkDecoder<double> decoder(std::move(storage), cols, sizes, 0, count, n, 0.0, encoding, physics);
   if (!decoder.init()) return true;
   while (!decoder.done()) {
     ede::DecodedEvent<double> e;

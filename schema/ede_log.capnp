@@ -1,4 +1,4 @@
-# The messages of an ede event log (.ede), format version 1. The framing around them (file header,
+# The messages of an ede event log (.ede), format versions 1 and 2. The framing around them (file header,
 # record headers, zstd frames, trailer) and the column encodings are described in FORMAT.md beside this
 # file. Every scalar of the simulation (times, positions, velocities, radii, masses) is stored as the raw
 # little-endian bytes of the run's scalar type, so a log is exact for float, double and long double runs.
@@ -40,9 +40,13 @@ struct Header {
   species @17 :List(UInt32);      # diskCount species indices
   initialEnergy @18 :Float64;     # kinetic energy at t = 0
   tcModel @19 :Bool;              # the run keeps TC collision times (keyframes carry them)
-  columnEncoding @20 :UInt32;     # version of the chunk column encodings (FORMAT.md); 1
+  columnEncoding @20 :UInt32;     # version of the chunk column encodings (FORMAT.md): 1, or 2 in format version 2
   gravityX @21 :Float64;          # constant gravity (0 when absent: logs written before it read as no gravity)
   gravityY @22 :Float64;
+  # Format version 2: the collision rules' constants, as the engine holds them (scalars of the run's type),
+  # for replay's predictions of post-collision velocities (FORMAT.md, "Predictions").
+  pairOnePlusXi @23 :Data;        # S x S scalars, S = max(1, speciesNames): 1 + xi of species pair (a, b) at a S + b
+  wallRestitution @24 :Data;      # 4 scalars: xi of the left, right, bottom and top walls
 }
 
 # A run of consecutive logged events, stored as columns (FORMAT.md, "Chunk columns").
@@ -50,11 +54,12 @@ struct Chunk {
   firstEvent @0 :UInt64;   # index of the chunk's first event in the log (0-based)
   count @1 :UInt32;
   times @2 :Data;          # event times
-  kinds @3 :Data;          # one byte per event: 0 pair, 1 wall, 3 wrap, 4 action (ede::EventKind)
+  kinds @3 :Data;          # one byte per event: 0 pair, 1 wall, 3 wrap, 4 action (ede::EventKind); encoding 2: + 16 if TC-elastic
   disks @4 :Data;          # the first disk i of pair, wall and wrap events
   partners @5 :Data;       # pair: j - i; wall: wall id; wrap: direction
-  velocitiesRaw @6 :Data;        # pair: v_i' as raw scalars, byte-plane shuffled
-  velocityResiduals @7 :Data;    # pair: v_j' against momentum conservation; wall: v' against reflection
+  velocitiesRaw @6 :Data;        # encoding 1, pair: v_i' as raw scalars, byte-plane shuffled; encoding 2: empty
+  velocityResiduals @7 :Data;    # encoding 1: pair v_j' against momentum, wall v' against reflection;
+                                 # encoding 2: pair v_i', v_j' and wall v' against the collision rules
 }
 
 # The full state after a given number of logged events.

@@ -63,6 +63,7 @@ Series series(const LogBenchPlan& p, const std::string& label, const std::string
 SeekRow seek_row(const LogBenchPlan& p, std::uint64_t interval, bool rebuilds) {
   LogSettings settings;
   settings.keyframe_interval = interval;
+  settings.format_version = p.format_version;
   RunConfig c = series(p, "seek-" + power_of_two(interval) + (rebuilds ? "-rebuilds" : ""), p.reference, true,
                        settings).config;
   c.events = p.seek_events;
@@ -112,7 +113,8 @@ Result<LogBenchResults> run_log_bench(const LogBenchPlan& p) {
   std::error_code ec;
   const bool made_dir = std::filesystem::create_directories(p.tmp_dir, ec);
   if (ec) return Error{"cannot create " + p.tmp_dir + ": " + ec.message()};
-  const LogSettings defaults;
+  LogSettings defaults;
+  defaults.format_version = p.format_version;
   LogBenchResults res;
 
   // 1. Scenes: log off and on (default settings).

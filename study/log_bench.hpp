@@ -22,6 +22,7 @@ struct LogBenchPlan {
   bool skip_seek = false;
   std::vector<int> levels = {1, 3, 6, 9, 19};
   std::string tmp_dir = "/tmp/ede-bench-log";  // where the logs go (deleted as soon as read)
+  std::uint32_t format_version = 2;      // of every log written (1: the version 1 columns, for comparison)
 };
 
 // The default scenes and reference (relative to the repository root, where the docs run the benchmark).

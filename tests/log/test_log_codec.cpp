@@ -79,8 +79,13 @@ TEST_CASE("the file header refuses other files and other versions", "[log][codec
   std::uint32_t version = 0;
   CHECK(logfmt::check_file_header(h, version).empty());
   CHECK(version == logfmt::kFormatVersion);
-  h[8] = 2;  // a newer version
-  CHECK(logfmt::check_file_header(h, version).find("version 2") != std::string::npos);
+  h[8] = 1;  // format version 1: still read
+  CHECK(logfmt::check_file_header(h, version).empty());
+  CHECK(version == 1);
+  h[8] = 3;  // a newer version
+  CHECK(logfmt::check_file_header(h, version).find("version 3") != std::string::npos);
+  h[8] = 0;
+  CHECK(logfmt::check_file_header(h, version).find("version 0") != std::string::npos);
   std::memcpy(h, "seed = 1", 8);
   CHECK(logfmt::check_file_header(h, version).find("not an ede event log") != std::string::npos);
 }

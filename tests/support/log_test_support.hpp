@@ -33,6 +33,7 @@ LoggedRun<T> run_logged(const InitialState& s, const EngineOptions& o, const std
   info.ly = s.ly;
   info.boundary = o.boundary;
   info.species_names = s.species_names;
+  info.set_restitution(o.physics);
   info.rebuild_interval = o.rebuild_interval;
   info.tc_model = o.physics.tc > 0 && !o.physics.elastic();
   info.gx = o.physics.gravity[0];

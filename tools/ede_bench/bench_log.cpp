@@ -145,6 +145,8 @@ Command log_command(CLI::App& app) {
   l->add_option("--levels", o->plan.levels, "zstd levels to compare")->delimiter(',')->check(CLI::Range(1, 22));
   l->add_option("--out-dir", o->out_dir, "also write the tables as CSV files into this folder");
   l->add_option("--tmp-dir", o->plan.tmp_dir, "where the temporary logs go (deleted as soon as read)");
+  l->add_option("--format-version", o->plan.format_version, "log format version to write: 2 (default) or 1")
+      ->check(CLI::Range(1, 2));
   l->add_flag("--quick", o->quick, "a smoke run (well under a minute): 1 repeat, stop.events=500000, 2e6 seek events");
   return {l, [o, repeat, seek_events] {
             if (o->quick && !repeat->count()) o->plan.repeat = 1;

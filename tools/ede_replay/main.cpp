@@ -6,6 +6,7 @@
 //   ede-replay events LOG [--from T0] [--to T1] [-o FILE]   events as CSV (or --from-event/--to-event)
 //   ede-replay verify LOG                            re-run the logged scene and compare every event
 //   ede-replay diff A B                              the first event at which two logs differ
+//   ede-replay convert LOG -o OUT [--format-version 1|2]   the same log in another format version
 //
 // Thin: one file per subcommand, each parsing its options and calling libede (LogReader, Replay, the
 // engine for verify). A first argument that is not a subcommand makes the command `state`, so the common
@@ -28,6 +29,7 @@ static int run_main(int argc, char** argv) {
   const std::vector<std::pair<std::string, Command>> commands = {
       {"state", add_state_command(app)},   {"info", add_info_command(app)}, {"events", add_events_command(app)},
       {"verify", add_verify_command(app)}, {"diff", add_diff_command(app)}, {"export", add_export_command(app)},
+      {"convert", add_convert_command(app)},
   };
 
   // `ede-replay LOG --at T` is `ede-replay state LOG --at T`.

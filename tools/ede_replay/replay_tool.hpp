@@ -25,6 +25,7 @@ Command add_events_command(CLI::App& app);
 Command add_verify_command(CLI::App& app);
 Command add_diff_command(CLI::App& app);
 Command add_export_command(CLI::App& app);
+Command add_convert_command(CLI::App& app);
 
 // An error about the input: message on stderr, exit status 1.
 inline int fail(const std::string& message) {

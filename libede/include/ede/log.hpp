@@ -9,7 +9,9 @@
 // A log whose run was killed reads up to its last complete record (info().complete is false and
 // info().incomplete_reason says how far it goes). States are rebuilt by applying the logged events to the
 // nearest keyframe with the engine's own state-update functions: a seek costs one keyframe plus the
-// events since it, never the whole log, and no collision physics runs (except in verify(), whose job it is).
+// events since it, never the whole log, and the simulation never reruns (except in verify(), whose job it
+// is; format version 2 decodes each stored velocity and time as a residual against the collision rule's
+// and contact time's prediction, which is not a rerun: the stored residual has the last word).
 // A Log is cheap to copy (copies share the file); one thread at a time per copy.
 #pragma once
 
@@ -144,6 +146,9 @@ class Log {
   // equal for logs of the same run whatever compiler or compression level wrote them. Replays the log.
   // The text names the hash: "xxh3-128:" and 32 hex digits.
   Result<std::string> content_digest() const;
+  // Writes this (complete) log again at `out_path` in format version 1 or 2 (the latest, smaller): the same
+  // header, events and keyframes, so every state read from the copy is bit-identical to this log's.
+  Status convert(const std::string& out_path, std::uint32_t format_version = 2) const;
 
   struct Impl;
   const Impl& impl() const { return *impl_; }

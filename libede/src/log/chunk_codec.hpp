@@ -1,7 +1,7 @@
 // Coding a chunk of logged events as columns (schema/FORMAT.md, "Chunk columns"), and decoding it while
-// applying it to a replayed state.
+// applying it to a replayed state. Two column encodings, chosen by the header's columnEncoding:
 //
-// Columns, per event in order:
+// Encoding 1 (format version 1), per event in order:
 //   times       varint: the first event's ordered key in full, then key deltas (times never decrease)
 //   kinds       one byte (EventKind: pair 0, wall 1, wrap 3, action 4)
 //   disks       varint i (pair, wall, wrap)
@@ -9,11 +9,19 @@
 //   raw         pair: v_i' x and y as raw scalars; the column is byte-plane shuffled
 //   residuals   varint zigzag(key(v) - key(prediction)): pair v_j' against momentum conservation
 //               (m_i v_i + m_j v_j - m_i v_i') / m_j; wall v' against a perfect reflection
-// The predictions are plain arithmetic on values the reader already has (the pre-event velocities of its
-// replayed state and the masses from the header), evaluated identically on both sides, so decoding is
-// exact whatever the prediction's quality: a residual of 0 costs one byte, a bad prediction a few more.
-// Rejected: storing all four velocities raw (~8 more bytes per pair event) and predicting v_i' with the
-// collision rule itself (replay would then re-run the physics it exists to avoid).
+// Encoding 2 (format version 2): every velocity and time coded against what replay predicts from the state
+// just before the event (log/event_predictions.hpp), so an ordinary run's velocities cost ~0 and its times
+// a byte or so:
+//   kinds       one byte: the kind, plus kTcElasticFlag when the TC model made the collision elastic
+//   disks, partners  as in encoding 1
+//   times       varint: 2 zigzag(key(t) - key(predicted t)), or 2 (key(t) - key(previous t)) + 1 when that
+//               is smaller or nothing is predicted (the previous key is 0 at a chunk's first event)
+//   raw         empty
+//   residuals   varint zigzag(key(v) - key(prediction)): pair v_i'x, v_i'y, v_j'x, v_j'y against the
+//               collision rule; wall v'x, v'y against the wall's rule
+// Both are lossless whatever the predictions' quality: a residual of 0 costs one byte, a bad prediction a
+// few more. Rejected for encoding 2: keeping v_i' raw (60 % of a version 1 log) and the momentum
+// prediction of v_j' (it is exact only when the rule's own v_j' happens to round the same way).
 #pragma once
 
 #include <cstdint>
@@ -26,6 +34,7 @@
 #include "core/particles.hpp"
 #include "ede/error.hpp"
 #include "core/state_update.hpp"
+#include "log/event_predictions.hpp"
 #include "log/scalar_bytes.hpp"
 
 namespace ede {
@@ -49,6 +58,22 @@ inline T apply_residual(u128 r, T predicted) {
   return from_ordered_key<T>(ordered_key(predicted) + u128(unzigzag(r)));
 }
 
+// Kind byte of encoding 2: this collision was made elastic by the TC model (the rule uses 1 + xi = 2).
+constexpr unsigned char kTcElasticFlag = 0x10;
+constexpr std::uint32_t kLatestColumnEncoding = 2;
+
+// The time a version 2 log predicts for an event from the state just before it (kNever: no prediction).
+template <class T>
+inline T predicted_event_time(const EventPhysics<T>& ph, const Particles<T>& s, EventKind kind, std::int32_t i,
+                              std::int32_t j) {
+  switch (kind) {
+    case EventKind::Pair: return predict_pair_time(ph, s, i, j);
+    case EventKind::Wall: return predict_wall_time(ph, s.disk[std::size_t(i)], j);
+    case EventKind::Wrap: return predict_wrap_time(ph, s.disk[std::size_t(i)], j);
+    default: return kNever<T>;
+  }
+}
+
 // The raw columns of one chunk, as the encoder fills them and the schema stores them.
 struct ChunkColumns {
   std::vector<unsigned char> times, kinds, disks, partners, raw, residuals;  // raw: already shuffled
@@ -57,26 +82,25 @@ struct ChunkColumns {
 template <class T>
 class ChunkEncoder {
  public:
-  explicit ChunkEncoder(const std::vector<T>& mass) : mass_(mass) {}
+  // Encoding 2 reads the physics (and `state` in add): the caller keeps them alive.
+  ChunkEncoder(const std::vector<T>& mass, std::uint32_t encoding, const EventPhysics<T>& physics)
+      : mass_(mass), encoding_(encoding), physics_(physics) {}
 
   void reset(std::uint64_t first_event) {
     first_event_ = first_event;
     count_ = 0;
+    previous_key_ = 0;
     times_.clear(), kinds_.clear(), disks_.clear(), partners_.clear(), raw_.clear(), residuals_.clear();
   }
 
-  void add(const EventOutcome<T>& e) {
-    add_time(e.time);
-    kinds_.byte(static_cast<unsigned char>(e.kind));
-    switch (e.kind) {
-      case EventKind::Pair: add_pair(e); break;
-      case EventKind::Wall: add_wall(e); break;
-      case EventKind::Wrap:
-        disks_.varint(u128(e.i));
-        partners_.varint(u128(e.j));
-        break;
-      default: break;  // Action: the kind and time say it all
-    }
+  // `before`: the state just before the event, as replay has it (encoding 2 only).
+  void add(const EventOutcome<T>& e, const Particles<T>& before) {
+    if (encoding_ == 1)
+      add_v1(e);
+    else
+      add_v2(e, before);
+    if (count_ == 0) time_first_ = e.time;
+    time_last_ = e.time;
     ++count_;
   }
 
@@ -91,12 +115,75 @@ class ChunkEncoder {
   }
 
  private:
-  void add_time(T t) {
-    const u128 key = ordered_key(t);
-    times_.varint(count_ == 0 ? key : key - previous_key_);
+  void add_v1(const EventOutcome<T>& e) {
+    const u128 key = ordered_key(e.time);
+    times_.varint(key - previous_key_);
     previous_key_ = key;
-    if (count_ == 0) time_first_ = t;
-    time_last_ = t;
+    kinds_.byte(static_cast<unsigned char>(e.kind));
+    switch (e.kind) {
+      case EventKind::Pair: add_pair_v1(e); break;
+      case EventKind::Wall: add_wall_v1(e); break;
+      case EventKind::Wrap: add_ids(e); break;
+      default: break;  // Action: the kind and time say it all
+    }
+  }
+
+  void add_v2(const EventOutcome<T>& e, const Particles<T>& s) {
+    const bool collision = e.kind == EventKind::Pair || e.kind == EventKind::Wall;
+    bool tc = collision && e.tc_elastic;
+    // An event that does not say (a converted version 1 log) gets the flag when only the elastic rule
+    // predicts it exactly; in a run the engine's own flag is always the one that does.
+    if (collision && !tc && physics_.tc_model && !rule_exact(e, s, false) && rule_exact(e, s, true)) tc = true;
+    kinds_.byte(static_cast<unsigned char>(static_cast<unsigned char>(e.kind) | (tc ? kTcElasticFlag : 0)));
+    if (e.kind == EventKind::Pair || e.kind == EventKind::Wall || e.kind == EventKind::Wrap) add_ids(e);
+    add_time_v2(e.time, predicted_event_time(physics_, s, e.kind, e.i, e.j));
+    if (e.kind == EventKind::Pair) {
+      T v[4];
+      predict_pair_velocities(physics_, s, e.i, e.j, e.time, tc, v);
+      residuals_.varint(residual(e.vix, v[0]));
+      residuals_.varint(residual(e.viy, v[1]));
+      residuals_.varint(residual(e.vjx, v[2]));
+      residuals_.varint(residual(e.vjy, v[3]));
+    } else if (e.kind == EventKind::Wall) {
+      T v[2];
+      predict_wall_velocity(physics_, s, e.i, e.j, e.time, tc, v);
+      residuals_.varint(residual(e.vix, v[0]));
+      residuals_.varint(residual(e.viy, v[1]));
+    }
+  }
+
+  bool rule_exact(const EventOutcome<T>& e, const Particles<T>& s, bool tc) const {
+    T v[4];
+    if (e.kind == EventKind::Pair) {
+      predict_pair_velocities(physics_, s, e.i, e.j, e.time, tc, v);
+      return same_bits(v[0], e.vix) && same_bits(v[1], e.viy) && same_bits(v[2], e.vjx) && same_bits(v[3], e.vjy);
+    }
+    predict_wall_velocity(physics_, s, e.i, e.j, e.time, tc, v);
+    return same_bits(v[0], e.vix) && same_bits(v[1], e.viy);
+  }
+  static bool same_bits(T a, T b) { return ordered_key(a) == ordered_key(b); }
+
+  // The smaller of the residual against the prediction (even code) and the delta to the previous event.
+  void add_time_v2(T t, T predicted) {
+    const u128 key = ordered_key(t);
+    const u128 delta = key - previous_key_;
+    previous_key_ = key;
+    if (predicted != kNever<T> && predicted == predicted) {
+      const u128 r = residual(t, predicted);
+      if (r < delta) {
+        times_.varint(r << 1);
+        return;
+      }
+    }
+    times_.varint((delta << 1) | 1);
+  }
+
+  void add_ids(const EventOutcome<T>& e) {
+    disks_.varint(u128(e.i));
+    if (e.kind == EventKind::Pair)
+      partners_.varint(zigzag(i128(e.j) - i128(e.i)));
+    else
+      partners_.varint(u128(e.j));
   }
 
   void add_scalar(T v) {
@@ -105,9 +192,8 @@ class ChunkEncoder {
     raw_.raw(b, sizeof b);
   }
 
-  void add_pair(const EventOutcome<T>& e) {
-    disks_.varint(u128(e.i));
-    partners_.varint(zigzag(i128(e.j) - i128(e.i)));
+  void add_pair_v1(const EventOutcome<T>& e) {
+    add_ids(e);
     add_scalar(e.vix);
     add_scalar(e.viy);
     const T mi = mass_[std::size_t(e.i)], mj = mass_[std::size_t(e.j)];
@@ -115,15 +201,16 @@ class ChunkEncoder {
     residuals_.varint(residual(e.vjy, momentum_prediction(mi, mj, e.viy0, e.vjy0, e.viy)));
   }
 
-  void add_wall(const EventOutcome<T>& e) {
-    disks_.varint(u128(e.i));
-    partners_.varint(u128(e.j));
+  void add_wall_v1(const EventOutcome<T>& e) {
+    add_ids(e);
     const bool vertical = e.j == kWallLeft || e.j == kWallRight;
     residuals_.varint(residual(e.vix, vertical ? -e.vix0 : e.vix0));
     residuals_.varint(residual(e.viy, vertical ? e.viy0 : -e.viy0));
   }
 
   const std::vector<T>& mass_;
+  std::uint32_t encoding_;
+  const EventPhysics<T>& physics_;
   std::uint64_t first_event_ = 0;
   std::uint32_t count_ = 0;
   u128 previous_key_ = 0;
@@ -139,6 +226,7 @@ struct DecodedEvent {
   EventKind kind{};
   std::int32_t i = -1, j = -1;
   T vix{}, viy{}, vjx{}, vjy{};
+  bool tc_elastic = false;  // encoding 2: the kind byte's TC flag
 };
 
 // Decodes a chunk one event at a time against a replayed state: the next event's fields need the state
@@ -151,8 +239,10 @@ class ChunkDecoder {
  public:
   enum Column { kTimes = 0, kKinds, kDisks, kPartners, kRaw, kResiduals, kColumnCount };
 
+  // `physics`: encoding 2's predictions (copied: small).
   ChunkDecoder(std::vector<std::uint64_t> storage, const unsigned char* const* cols, const std::size_t* sizes,
-               std::uint64_t first_event, std::uint32_t count, std::size_t disks, T last_time);
+               std::uint64_t first_event, std::uint32_t count, std::size_t disks, T last_time,
+               std::uint32_t encoding, const EventPhysics<T>& physics);
   Status init();  // checks the raw column and unshuffles it
 
   bool done() const { return decoded_ == count_; }
@@ -168,7 +258,12 @@ class ChunkDecoder {
   bool read_scalar(T& out);
   bool read_residual(T predicted, T& out);
   bool read_time(T& out);
+  bool read_time_v2(T predicted, T& out);
+  bool accept_time(u128 key, T& out);
+  bool read_kind(DecodedEvent<T>& e);
+  bool read_ids(DecodedEvent<T>& e);
   bool read_fields(const Particles<T>& state, DecodedEvent<T>& e);
+  bool read_v2(const Particles<T>& state, DecodedEvent<T>& e);
 
   std::vector<std::uint64_t> storage_;
   ByteReader times_, kinds_, disks_, partners_, residuals_;
@@ -181,6 +276,8 @@ class ChunkDecoder {
   std::size_t disks_count_;
   T last_time_;
   u128 previous_key_ = 0;
+  std::uint32_t encoding_;
+  EventPhysics<T> physics_;
   std::string error_;
 };
 

@@ -8,7 +8,8 @@ namespace ede {
 template <class T>
 ChunkDecoder<T>::ChunkDecoder(std::vector<std::uint64_t> storage, const unsigned char* const* cols,
                               const std::size_t* sizes, std::uint64_t first_event, std::uint32_t count,
-                              std::size_t disks, T last_time)
+                              std::size_t disks, T last_time, std::uint32_t encoding,
+                              const EventPhysics<T>& physics)
     : storage_(std::move(storage)),
       times_(cols[kTimes], sizes[kTimes]),
       kinds_(cols[kKinds], sizes[kKinds]),
@@ -20,7 +21,9 @@ ChunkDecoder<T>::ChunkDecoder(std::vector<std::uint64_t> storage, const unsigned
       first_event_(first_event),
       count_(count),
       disks_count_(disks),
-      last_time_(last_time) {}
+      last_time_(last_time),
+      encoding_(encoding),
+      physics_(physics) {}
 
 template <class T>
 Status ChunkDecoder<T>::init() {
@@ -65,12 +68,7 @@ bool ChunkDecoder<T>::read_residual(T predicted, T& out) {
 }
 
 template <class T>
-bool ChunkDecoder<T>::read_time(T& out) {
-  u128 v;
-  if (!times_.varint(v, ScalarBytes<T>::kBits)) return fail("the time column is cut short");
-  const bool first = decoded_ == 0;
-  const u128 key = first ? v : previous_key_ + v;
-  if (!first && (key < previous_key_ || (key >> ScalarBytes<T>::kBits) != 0)) return fail("an event time overflows");
+bool ChunkDecoder<T>::accept_time(u128 key, T& out) {
   previous_key_ = key;
   out = from_ordered_key<T>(key);
   if (!std::isfinite(double(out))) return fail("an event time is not finite");
@@ -80,10 +78,48 @@ bool ChunkDecoder<T>::read_time(T& out) {
 }
 
 template <class T>
-bool ChunkDecoder<T>::read_fields(const Particles<T>& p, DecodedEvent<T>& e) {
+bool ChunkDecoder<T>::read_time(T& out) {
+  u128 v;
+  if (!times_.varint(v, ScalarBytes<T>::kBits)) return fail("the time column is cut short");
+  const u128 key = previous_key_ + v;  // the previous key is 0 before the chunk's first event
+  if (key < previous_key_ || (key >> ScalarBytes<T>::kBits) != 0) return fail("an event time overflows");
+  return accept_time(key, out);
+}
+
+// Encoding 2: an even code is a residual against the prediction, an odd one a delta to the previous time.
+template <class T>
+bool ChunkDecoder<T>::read_time_v2(T predicted, T& out) {
+  u128 v;
+  if (!times_.varint(v, ScalarBytes<T>::kBits + 2)) return fail("the time column is cut short");
+  u128 key;
+  if (v & 1) {
+    key = previous_key_ + (v >> 1);
+    if (key < previous_key_) return fail("an event time overflows");
+  } else {
+    key = ordered_key(predicted) + u128(unzigzag(v >> 1));  // wraps harmlessly on corrupted input
+  }
+  if ((key >> ScalarBytes<T>::kBits) != 0) return fail("an event time overflows");
+  return accept_time(key, out);
+}
+
+template <class T>
+bool ChunkDecoder<T>::read_kind(DecodedEvent<T>& e) {
   unsigned char kind;
   if (!kinds_.byte(kind)) return fail("the kind column is cut short");
-  e.kind = static_cast<EventKind>(kind);
+  const unsigned char flag = encoding_ >= 2 ? kTcElasticFlag : 0;
+  e.tc_elastic = (kind & flag) != 0;
+  const unsigned char k = static_cast<unsigned char>(kind & ~flag);
+  e.kind = static_cast<EventKind>(k);
+  const bool known = e.kind == EventKind::Pair || e.kind == EventKind::Wall || e.kind == EventKind::Wrap ||
+                     e.kind == EventKind::Action;
+  if (!known) return fail("unknown event kind " + std::to_string(kind));
+  if (e.tc_elastic && e.kind != EventKind::Pair && e.kind != EventKind::Wall)
+    return fail("a TC flag on an event that is not a collision");
+  return true;
+}
+
+template <class T>
+bool ChunkDecoder<T>::read_ids(DecodedEvent<T>& e) {
   switch (e.kind) {
     case EventKind::Pair: {
       u128 zj;
@@ -92,6 +128,32 @@ bool ChunkDecoder<T>::read_fields(const Particles<T>& p, DecodedEvent<T>& e) {
       const i128 j = i128(e.i) + unzigzag(zj);
       if (j < 0 || j >= i128(disks_count_) || j == e.i) return fail("a pair partner id is out of range");
       e.j = std::int32_t(j);
+      return true;
+    }
+    case EventKind::Wall: {
+      u128 wall;
+      if (!read_disk(disks_, e.i)) return false;
+      if (!partners_.varint(wall, 8) || wall > 3) return fail("a wall id is missing or out of range");
+      e.j = std::int32_t(wall);
+      return true;
+    }
+    case EventKind::Wrap: {
+      u128 dir;
+      if (!read_disk(disks_, e.i)) return false;
+      if (!partners_.varint(dir, 8) || dir > 3) return fail("a wrap direction is missing or out of range");
+      e.j = std::int32_t(dir);
+      return true;
+    }
+    default: return true;
+  }
+}
+
+// Encoding 1: the time came first; then ids and velocities.
+template <class T>
+bool ChunkDecoder<T>::read_fields(const Particles<T>& p, DecodedEvent<T>& e) {
+  if (!read_kind(e) || !read_ids(e)) return false;
+  switch (e.kind) {
+    case EventKind::Pair: {
       // Velocities just before the event: the records' own, moved on by gravity if there is any.
       const T aix = p.vx_at(std::size_t(e.i), e.time), aiy = p.vy_at(std::size_t(e.i), e.time);
       const T ajx = p.vx_at(std::size_t(e.j), e.time), ajy = p.vy_at(std::size_t(e.j), e.time);
@@ -101,24 +163,31 @@ bool ChunkDecoder<T>::read_fields(const Particles<T>& p, DecodedEvent<T>& e) {
              read_residual(momentum_prediction(mi, mj, aiy, ajy, e.viy), e.vjy);
     }
     case EventKind::Wall: {
-      u128 wall;
-      if (!read_disk(disks_, e.i)) return false;
-      if (!partners_.varint(wall, 8) || wall > 3) return fail("a wall id is missing or out of range");
-      e.j = std::int32_t(wall);
       const T ax = p.vx_at(std::size_t(e.i), e.time), ay = p.vy_at(std::size_t(e.i), e.time);
       const bool vertical = e.j == kWallLeft || e.j == kWallRight;
       return read_residual(vertical ? -ax : ax, e.vix) && read_residual(vertical ? ay : -ay, e.viy);
     }
-    case EventKind::Wrap: {
-      u128 dir;
-      if (!read_disk(disks_, e.i)) return false;
-      if (!partners_.varint(dir, 8) || dir > 3) return fail("a wrap direction is missing or out of range");
-      e.j = std::int32_t(dir);
-      return true;
-    }
-    case EventKind::Action: return true;
-    default: return fail("unknown event kind " + std::to_string(kind));
+    default: return true;
   }
+}
+
+// Encoding 2: kind and ids, then the time against its prediction, then the velocities against theirs.
+template <class T>
+bool ChunkDecoder<T>::read_v2(const Particles<T>& p, DecodedEvent<T>& e) {
+  if (!read_kind(e) || !read_ids(e)) return false;
+  if (!read_time_v2(predicted_event_time(physics_, p, e.kind, e.i, e.j), e.time)) return false;
+  if (e.kind == EventKind::Pair) {
+    T v[4];
+    predict_pair_velocities(physics_, p, e.i, e.j, e.time, e.tc_elastic, v);
+    return read_residual(v[0], e.vix) && read_residual(v[1], e.viy) && read_residual(v[2], e.vjx) &&
+           read_residual(v[3], e.vjy);
+  }
+  if (e.kind == EventKind::Wall) {
+    T v[2];
+    predict_wall_velocity(physics_, p, e.i, e.j, e.time, e.tc_elastic, v);
+    return read_residual(v[0], e.vix) && read_residual(v[1], e.viy);
+  }
+  return true;
 }
 
 template <class T>
@@ -126,7 +195,8 @@ Status ChunkDecoder<T>::next(const Particles<T>& state, DecodedEvent<T>& e) {
   if (done()) return Error{"chunk at event " + std::to_string(first_event_) + " has no more events"};
   e = DecodedEvent<T>{};
   e.index = first_event_ + decoded_;
-  if (!read_time(e.time) || !read_fields(state, e)) return Error{"event " + std::to_string(e.index) + ": " + error_};
+  const bool ok = encoding_ >= 2 ? read_v2(state, e) : read_time(e.time) && read_fields(state, e);
+  if (!ok) return Error{"event " + std::to_string(e.index) + ": " + error_};
   ++decoded_;
   return Ok{};
 }

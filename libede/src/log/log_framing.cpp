@@ -49,18 +49,19 @@ const char* to_string(RecordKind kind) {
   return "unknown";
 }
 
-void encode_file_header(unsigned char out[kFileHeaderSize]) {
+void encode_file_header(unsigned char out[kFileHeaderSize], std::uint32_t version) {
   std::memcpy(out, kFileMagic.data(), 8);
-  put_u32(out + 8, kFormatVersion);
+  put_u32(out + 8, version);
   put_u32(out + 12, 0);
 }
 
 std::string check_file_header(const unsigned char in[kFileHeaderSize], std::uint32_t& version) {
   if (std::memcmp(in, kFileMagic.data(), 8) != 0) return "not an ede event log (wrong magic number)";
   version = get_u32(in + 8);
-  if (version != kFormatVersion)
-    return "log format version " + std::to_string(version) + ", but this ede reads version " +
-           std::to_string(kFormatVersion) + "; use the ede version that wrote it (or a newer one)";
+  if (version < kOldestFormatVersion || version > kFormatVersion)
+    return "log format version " + std::to_string(version) + ", but this ede reads versions " +
+           std::to_string(kOldestFormatVersion) + " to " + std::to_string(kFormatVersion) +
+           "; use the ede version that wrote it (or a newer one)";
   return {};
 }
 

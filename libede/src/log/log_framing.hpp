@@ -13,7 +13,8 @@
 
 namespace ede::logfmt {
 
-constexpr std::uint32_t kFormatVersion = 1;
+constexpr std::uint32_t kFormatVersion = 2;       // what the writer writes by default
+constexpr std::uint32_t kOldestFormatVersion = 1;  // the oldest a reader reads
 // Like PNG's: a non-ASCII first byte, and CR LF / SUB / LF to catch text-mode transfers.
 constexpr std::array<unsigned char, 8> kFileMagic = {0x89, 'E', 'D', 'E', '\r', '\n', 0x1A, '\n'};
 constexpr std::array<unsigned char, 8> kTrailerMagic = {'E', 'D', 'E', '-', 'E', 'N', 'D', '\n'};
@@ -44,7 +45,7 @@ struct Trailer {
   std::uint64_t trailer_offset = 0; // file offset of the trailer itself (= size of everything before it)
 };
 
-void encode_file_header(unsigned char out[kFileHeaderSize]);
+void encode_file_header(unsigned char out[kFileHeaderSize], std::uint32_t version = kFormatVersion);
 // Empty if fine, else what is wrong (not an ede log, or a version this reader does not know).
 std::string check_file_header(const unsigned char in[kFileHeaderSize], std::uint32_t& version);
 

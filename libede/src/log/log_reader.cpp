@@ -197,9 +197,14 @@ Status LogReader::read_header_record(std::uint64_t offset, std::uint64_t payload
     out.tc_model = h.getTcModel();
     out.gx = h.getGravityX();
     out.gy = h.getGravityY();
-    if (h.getColumnEncoding() != 1)
-      return Error{at(path_, offset) + ": chunk column encoding " + std::to_string(h.getColumnEncoding()) +
-                   " is unknown to this ede (it reads encoding 1)"};
+    out.column_encoding = h.getColumnEncoding();
+    if (out.column_encoding != out.format_version)
+      return Error{at(path_, offset) + ": chunk column encoding " + std::to_string(out.column_encoding) +
+                   " in a format version " + std::to_string(out.format_version) + " log (this ede reads encoding " +
+                   std::to_string(out.format_version) + " there)"};
+    const auto xi = h.getPairOnePlusXi(), xw = h.getWallRestitution();
+    out.pair_one_plus_xi.assign(xi.begin(), xi.end());
+    out.wall_restitution.assign(xw.begin(), xw.end());
   } catch (const kj::Exception& e) {
     return Error{at(path_, offset) + ": malformed header record (" + e.getDescription().cStr() + ")", ErrorKind::Corrupt};
   }
@@ -208,6 +213,11 @@ Status LogReader::read_header_record(std::uint64_t offset, std::uint64_t payload
   if (h.disks == 0 || h.disks > limits_.max_disks || h.radius.size() != std::size_t(h.disks) * w ||
       h.mass.size() != std::size_t(h.disks) * w || h.species.size() != h.disks)
     return Error{at(path_, offset) + ": the header's per-disk data does not match its disk count", ErrorKind::Corrupt};
+  const std::size_t species = std::max<std::size_t>(1, h.species_names.size());
+  if (h.column_encoding >= 2 &&
+      (h.pair_one_plus_xi.size() != species * species * w || h.wall_restitution.size() != 4 * w))
+    return Error{at(path_, offset) + ": the header's restitution tables do not match its species count",
+                 ErrorKind::Corrupt};
   for (const std::uint32_t s : h.species)
     if (s >= h.species_names.size()) return Error{at(path_, offset) + ": a disk names a species that does not exist", ErrorKind::Corrupt};
   if (!(h.lx > 0) || !(h.ly > 0) || !std::isfinite(h.lx) || !std::isfinite(h.ly) || h.chunk_events == 0 ||

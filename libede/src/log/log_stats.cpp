@@ -7,6 +7,7 @@
 #include <string>
 
 #include "ede_log.capnp.h"
+#include "log/chunk_codec.hpp"
 #include "log/log_messages.hpp"
 
 namespace ede {
@@ -33,8 +34,12 @@ Status count_chunk(const LogReader& log, const LogRecordRef& ref, LogKindCounts&
     if (kinds.size() != ref.count)
       return Error{where + ": its kinds column holds " + std::to_string(kinds.size()) + " bytes for " +
                    std::to_string(ref.count) + " events"};
-    for (const unsigned char k : kinds) {
-      if (!loggable(k)) return Error{where + ": unknown event kind " + std::to_string(k)};
+    // Version 2 marks TC-elastic collisions with a flag bit in the kind byte (FORMAT.md).
+    const unsigned char flag = log.header().column_encoding >= 2 ? kTcElasticFlag : 0;
+    for (const unsigned char byte : kinds) {
+      const unsigned char k = static_cast<unsigned char>(byte & ~flag);
+      if (!loggable(k) || ((byte & flag) && k != 0 && k != 1))
+        return Error{where + ": unknown event kind " + std::to_string(byte)};
       ++out.by_kind[k];
     }
   } catch (const kj::Exception& e) {

@@ -47,6 +47,13 @@ std::vector<unsigned char> scalar_column(std::size_t n, F value_of) {
 }
 
 template <class T>
+std::vector<unsigned char> raw_scalars(const std::vector<T>& v) {
+  std::vector<unsigned char> b(v.size() * kScalarWidth<T>);
+  for (std::size_t k = 0; k < v.size(); ++k) scalar_to_bytes(v[k], b.data() + k * kScalarWidth<T>);
+  return b;
+}
+
+template <class T>
 std::vector<unsigned char> one_scalar(T v) {
   std::vector<unsigned char> b(kScalarWidth<T>);
   scalar_to_bytes(v, b.data());
@@ -81,7 +88,23 @@ LogRunInfo LogRunInfo::from(const Scene& scene, const EngineOptions& options, co
   r.tc_model = options.physics.tc > 0 && !options.physics.elastic();
   r.gx = options.physics.gravity[0];
   r.gy = options.physics.gravity[1];
+  r.set_restitution(options.physics);
   return r;
+}
+
+// The engine's table (Engine::setup_restitution): every pair at xi, then the named pairs; an elastic engine
+// applies none of it, and then every value is 1 anyway.
+void LogRunInfo::set_restitution(const PhysicsSpec& physics) {
+  const std::size_t n = std::max<std::size_t>(species_names.size(), 1);
+  pair_restitution.assign(n * n, physics.restitution);
+  const auto index_of = [&](const std::string& name) {
+    return std::size_t(std::find(species_names.begin(), species_names.end(), name) - species_names.begin());
+  };
+  for (const PairRestitution& pr : physics.pairs) {
+    const std::size_t a = index_of(pr.a), b = index_of(pr.b);
+    if (a < n && b < n) pair_restitution[a * n + b] = pair_restitution[b * n + a] = pr.value;
+  }
+  for (int w = 0; w < 4; ++w) wall_restitution[w] = physics.wall(w);
 }
 
 template <class T>
@@ -90,7 +113,12 @@ struct LogWriter<T>::Impl {
   LogSettings settings;
   RecordWriter out;
   std::vector<T> mass;
-  ChunkEncoder<T> chunk{mass};
+  EventPhysics<T> physics;
+  ChunkEncoder<T> chunk{mass, settings.format_version, physics};
+  // Version 2: the state as replay will have it before each event (the columns are coded against it),
+  // kept by applying each event with the same function replay uses.
+  Particles<T> replayed;
+  std::vector<Disk<T>> resume_disks;
   std::uint64_t logged = 0;
   struct Pending {  // an index entry whose offset is known once the record is written
     std::size_t sequence;
@@ -104,18 +132,48 @@ struct LogWriter<T>::Impl {
   Impl(const std::string& path, const LogRunInfo& r, const LogSettings& s, std::uint64_t start, int level)
       : run(r), settings(s), out(path, start, level) {}
 
-  // What needs the disks: the masses (residual predictions) and the automatic keyframe interval.
+  // What needs the disks: the masses and physics (predictions) and the automatic keyframe interval.
   void ensure_masses(const Particles<T>& p) {
-    if (mass.empty()) mass = p.mass;
+    if (mass.empty()) {
+      mass = p.mass;
+      physics = EventPhysics<T>::box(run.lx, run.ly, run.boundary == BoundaryKind::Periodic, T(run.gx), T(run.gy));
+      physics.species = std::max<std::size_t>(run.species_names.size(), 1);
+      physics.one_plus_xi.clear();
+      for (const double xi : run.pair_restitution) physics.one_plus_xi.push_back(T(1) + T(xi));
+      physics.one_plus_xi.resize(physics.species * physics.species, physics.one_plus_xi.empty() ? T(2) : physics.one_plus_xi[0]);
+      for (int w = 0; w < 4; ++w) physics.xi_wall[w] = T(run.wall_restitution[w]);
+      physics.tc_model = run.tc_model;
+    }
     if (settings.keyframe_interval == 0) settings.keyframe_interval = auto_keyframe_interval(p.size());
+  }
+
+  // The replayed state before the first event: the initial state, or a resumed run's keyframe records.
+  void ensure_replayed(const Particles<T>& p) {
+    if (settings.format_version < 2 || !replayed.disk.empty()) return;
+    replayed = p;
+    for (std::size_t i = 0; i < resume_disks.size() && i < replayed.size(); ++i) {
+      Disk<T>& d = replayed.disk[i];
+      const Disk<T>& from = resume_disks[i];
+      d.x = from.x, d.y = from.y, d.vx = from.vx, d.vy = from.vy, d.t = from.t;
+    }
+    resume_disks.clear();
+  }
+
+  void add_event(const EventOutcome<T>& e) {
+    chunk.add(e, replayed);
+    if (settings.format_version < 2) return;
+    DecodedEvent<T> d;
+    d.time = e.time, d.kind = e.kind, d.i = e.i, d.j = e.j;
+    d.vix = e.vix, d.viy = e.viy, d.vjx = e.vjx, d.vjy = e.vjy;
+    apply_event(d, replayed, physics.lx, physics.ly);
   }
 
   void write_header(const Particles<T>& p) {
     capnp::MallocMessageBuilder message;
     auto h = message.initRoot<logschema::Header>();
-    h.setEngineVersion(EDE_VERSION);
-    h.setCompiler(build_compiler());
-    h.setCompileFlags(build_flags());
+    h.setEngineVersion(run.engine_version.empty() ? std::string(EDE_VERSION) : run.engine_version);
+    h.setCompiler(run.compiler.empty() ? build_compiler() : run.compiler);
+    h.setCompileFlags(run.compile_flags.empty() ? build_flags() : run.compile_flags);
     h.setScalar(schema_scalar<T>());
     h.setSeed(run.seed);
     h.setSceneName(run.scene_name);
@@ -137,9 +195,15 @@ struct LogWriter<T>::Impl {
     for (std::size_t i = 0; i < p.size(); ++i) species.set(std::uint32_t(i), std::uint32_t(p.species[i]));
     h.setInitialEnergy(kinetic_energy(p));
     h.setTcModel(run.tc_model);
-    h.setColumnEncoding(1);
+    h.setColumnEncoding(settings.format_version);
     h.setGravityX(run.gx);
     h.setGravityY(run.gy);
+    if (settings.format_version >= 2) {
+      const auto table = physics.one_plus_xi;
+      set_data(h.initPairOnePlusXi(std::uint32_t(table.size() * kScalarWidth<T>)), raw_scalars(table));
+      set_data(h.initWallRestitution(std::uint32_t(4 * kScalarWidth<T>)),
+               raw_scalars(std::vector<T>(physics.xi_wall, physics.xi_wall + 4)));
+    }
     logfmt::RecordHeader rh;
     rh.kind = logfmt::RecordKind::Header;
     out.submit(rh, to_bytes(message));
@@ -254,8 +318,13 @@ struct LogWriter<T>::Impl {
 template <class T>
 Result<std::unique_ptr<LogWriter<T>>> LogWriter<T>::create(const std::string& path, const LogRunInfo& run,
                                                            const LogSettings& settings,
-                                                           const LogContinuation* continuation) {
+                                                           const LogContinuation* continuation,
+                                                           const std::vector<Disk<T>>* resume_disks) {
   if (settings.chunk_events == 0) return Error{"log settings: chunk_events must be positive"};
+  if (settings.format_version < logfmt::kOldestFormatVersion || settings.format_version > logfmt::kFormatVersion)
+    return Error{"log settings: format version " + std::to_string(settings.format_version) + " is not one this ede writes"};
+  if (continuation && settings.format_version >= 2 && !resume_disks)
+    return Error{"continuing a version 2 log needs the state at its resumable keyframe"};
   const std::uint64_t start = continuation ? continuation->cut_offset : 0;
   auto impl = std::make_unique<Impl>(path, run, settings, start, settings.compression_level);
   if (std::string e = impl->out.error(); !e.empty()) return Error{e};
@@ -264,9 +333,10 @@ Result<std::unique_ptr<LogWriter<T>>> LogWriter<T>::create(const std::string& pa
     impl->kept = continuation->entries;
   } else {
     std::vector<unsigned char> header(logfmt::kFileHeaderSize);
-    logfmt::encode_file_header(header.data());
+    logfmt::encode_file_header(header.data(), settings.format_version);
     impl->out.write_raw(std::move(header));
   }
+  if (resume_disks) impl->resume_disks = *resume_disks;
   impl->chunk.reset(impl->logged);
   return std::unique_ptr<LogWriter<T>>(new LogWriter<T>(std::move(impl)));
 }
@@ -280,6 +350,7 @@ LogWriter<T>::~LogWriter() = default;
 template <class T>
 void LogWriter<T>::on_start(T, const Particles<T>& p) {
   impl_->ensure_masses(p);
+  impl_->ensure_replayed(p);
   impl_->write_header(p);
 }
 
@@ -288,7 +359,8 @@ void LogWriter<T>::on_event(const EventOutcome<T>& e, const Particles<T>& p) {
   if (e.kind == EventKind::Cell) return;
   Impl& w = *impl_;
   w.ensure_masses(p);
-  w.chunk.add(e);
+  w.ensure_replayed(p);
+  w.add_event(e);
   ++w.logged;
   if (w.chunk.count() >= w.settings.chunk_events) w.flush_chunk();
   if (w.logged % w.settings.keyframe_interval == 0) w.write_keyframe(p, e.time, nullptr);

@@ -20,8 +20,8 @@
 
 namespace ede {
 
-// max(2^20, 4 N) logged events: a keyframe costs ~34 bytes per disk, events ~24 bytes each, so keyframes
-// stay under ~30% of a log at any N (a fixed 2^20 took 55% at N = 10^6), and seeking replays at most
+// max(2^20, 4 N) logged events: a keyframe costs ~34 bytes per disk, events ~24 bytes each in format
+// version 1 (fewer in version 2), so keyframes stayed under ~30% of a version 1 log at any N (a fixed 2^20 took 55% at N = 10^6), and seeking replays at most
 // ~4 N events (~0.3 s at N = 10^6, ~15 M events/s). See docs/performance.md, "Event log".
 std::uint64_t auto_keyframe_interval(std::size_t disks);
 
@@ -29,6 +29,7 @@ struct LogSettings {
   std::uint64_t keyframe_interval = 0;         // logged events between keyframes; 0: auto_keyframe_interval
   std::uint32_t chunk_events = 16384;          // events per chunk
   int compression_level = 3;                   // zstd level (docs/log-format-choices in docs/performance.md)
+  std::uint32_t format_version = 2;            // 2 (predicted columns), or 1 (for ede-replay convert and comparisons)
   static LogSettings from(const LogSpec& spec);
 };
 
@@ -44,6 +45,13 @@ struct LogRunInfo {
   std::uint64_t rebuild_interval = 0;
   bool tc_model = false;
   double gx = 0, gy = 0;  // gravity
+  // Restitution as the engine applies it (format version 2 stores it for replay's velocity predictions):
+  // S x S values for S = max(1, species) species, pair (a, b) at a S + b, and one per wall (WallId order).
+  std::vector<double> pair_restitution{1};
+  double wall_restitution[4] = {1, 1, 1, 1};
+  std::string engine_version, compiler, compile_flags;  // empty: this build's (a converted log keeps its own)
+  // pair_restitution and wall_restitution from the scene's physics, as the engine builds its table.
+  void set_restitution(const PhysicsSpec& physics);
   static LogRunInfo from(const Scene& scene, const EngineOptions& options, const std::vector<std::string>& species);
 };
 
@@ -67,10 +75,14 @@ LogContinuation continuation_from(const LogReader& log, std::size_t keyframe);
 template <class T>
 class LogWriter final : public Sink<T> {
  public:
-  // A new log at `path`, or, with `continuation`, the continuation of an interrupted one.
+  // A new log at `path`, or, with `continuation`, the continuation of an interrupted one; a version 2 log
+  // then also needs the disks' records at the resumable keyframe (`resume_disks`: x, y, vx, vy, t), since
+  // its columns are coded against the replayed state and a resumed engine reports no state before its
+  // first event.
   static Result<std::unique_ptr<LogWriter>> create(const std::string& path, const LogRunInfo& run,
                                                    const LogSettings& settings,
-                                                   const LogContinuation* continuation = nullptr);
+                                                   const LogContinuation* continuation = nullptr,
+                                                   const std::vector<Disk<T>>* resume_disks = nullptr);
   ~LogWriter() override;
 
   void on_start(T time, const Particles<T>& particles) override;

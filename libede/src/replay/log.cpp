@@ -10,6 +10,7 @@
 #include "core/scalar_dispatch.hpp"
 #include "core/state_of.hpp"
 #include "log/log_stats.hpp"
+#include "replay/log_convert.hpp"
 #include "replay/log_digest.hpp"
 #include "replay/log_impl.hpp"
 
@@ -206,5 +207,9 @@ Result<EventCounts> Log::count_events() const {
 }
 
 Result<std::string> Log::content_digest() const { return log_content_digest(impl_->reader); }
+
+Status Log::convert(const std::string& out_path, std::uint32_t format_version) const {
+  return convert_log(impl_->reader, out_path, format_version);
+}
 
 }  // namespace ede

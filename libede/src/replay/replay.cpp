@@ -41,6 +41,18 @@ bool read_column(const unsigned char* data, std::size_t size, std::size_t n, std
   return true;
 }
 
+// n plain (unshuffled) scalars, each finite.
+template <class T>
+bool read_raw_scalars(const std::vector<unsigned char>& bytes, std::size_t n, std::vector<T>& out) {
+  if (bytes.size() != n * kScalarWidth<T>) return false;
+  out.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    out[k] = scalar_from_bytes<T>(bytes.data() + k * kScalarWidth<T>);
+    if (!std::isfinite(double(out[k]))) return false;
+  }
+  return true;
+}
+
 template <class T>
 bool read_column(capnp::Data::Reader d, std::size_t n, std::vector<T>& out) {
   return read_column(d.begin(), d.size(), n, out);
@@ -132,6 +144,16 @@ Result<std::unique_ptr<Replay<T>>> Replay<T>::create(std::shared_ptr<const LogRe
   r->ly_ = T(h.ly);
   r->state_.gx = T(h.gx);
   r->state_.gy = T(h.gy);
+  r->physics_ = EventPhysics<T>::box(h.lx, h.ly, h.boundary == BoundaryKind::Periodic, r->state_.gx, r->state_.gy);
+  if (h.column_encoding >= 2) {
+    const std::size_t s = std::max<std::size_t>(1, h.species_names.size());
+    std::vector<T> table, walls;
+    if (!read_raw_scalars(h.pair_one_plus_xi, s * s, table) || !read_raw_scalars(h.wall_restitution, 4, walls))
+      return Error{log->path() + ": the header's restitution tables are malformed"};
+    r->physics_.species = s;
+    r->physics_.one_plus_xi = table;
+    for (int w = 0; w < 4; ++w) r->physics_.xi_wall[w] = walls[std::size_t(w)];
+  }
   if (Status s = r->load_keyframe(0); !s) return s.error();
   r->last_event_time_initial_ = r->time_;
   return r;
@@ -201,7 +223,8 @@ Status Replay<T>::open_chunk() {
     for (int k = 0; k < 6; ++k) ptrs[k] = cols[k].begin(), sizes[k] = cols[k].size();
     // The column pointers point into `storage`, which the decoder takes over (moving a vector keeps its buffer).
     cursor_->decoder = std::make_unique<ChunkDecoder<T>>(std::move(storage), ptrs, sizes, ref.first_event,
-                                                         std::uint32_t(ref.count), state_.size(), last_event_time_);
+                                                         std::uint32_t(ref.count), state_.size(), last_event_time_,
+                                                         log_->header().column_encoding, physics_);
   } catch (const kj::Exception& e) {
     return Error{where + ": malformed (" + e.getDescription().cStr() + ")"};
   }
@@ -268,6 +291,7 @@ T log_final_time(const LogReader& log, T time_without_chunks) {
   if (log.complete()) return scalar_from_bytes<T>(log.final_time_bytes().data());
   if (log.chunks().empty()) return time_without_chunks;
   const LogRecordRef& ref = log.chunks().back();
+  if (log.header().column_encoding >= 2) return T(ref.time_last);  // exact for float and double (Replay::final_time)
   auto words = log.load_message(ref.offset, ref.payload_size);
   if (words) {
     try {
@@ -283,9 +307,20 @@ template float log_final_time<float>(const LogReader&, float);
 template double log_final_time<double>(const LogReader&, double);
 template long double log_final_time<long double>(const LogReader&, long double);
 
+// A version 2 log's times need the replayed state, so an incomplete one's last event time is the record
+// header's (a double: exact for float and double runs), or, for long double, replayed.
 template <class T>
 T Replay<T>::final_time() const {
-  return log_final_time<T>(*log_, last_event_time_initial_);
+  if (log_->complete() || log_->chunks().empty() || log_->header().column_encoding < 2)
+    return log_final_time<T>(*log_, last_event_time_initial_);
+  const LogRecordRef& last = log_->chunks().back();
+  if constexpr (ScalarBytes<T>::kBits <= 64) {
+    return T(last.time_last);
+  } else {
+    auto r = Replay<T>::create(log_);
+    if (r && r.value()->seek_event(last.first_event + last.count)) return r.value()->last_event_time_;
+    return T(last.time_last);
+  }
 }
 
 template <class T>

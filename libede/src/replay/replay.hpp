@@ -75,6 +75,7 @@ class Replay {
   std::shared_ptr<Cursor> cursor_;
   Particles<T> state_;
   T lx_{}, ly_{};
+  EventPhysics<T> physics_;  // version 2's predictions (header physics)
   T time_{};
   T last_event_time_{};
   T last_event_time_initial_{};  // the first keyframe's time: the end of a log with no chunk

@@ -178,8 +178,11 @@ Result<std::unique_ptr<Simulation::Impl>> make_in(RunSetup setup, const Simulati
   LogWriterFor<T> log{};
   if constexpr (kLogScalar<T>) {
     if (!log_path.empty()) {
+      LogSettings settings = LogSettings::from(setup.scene.log);
+      if (setup.resumed_log) settings.format_version = setup.resumed_log->header().format_version;  // continue as written
       auto w = LogWriter<T>::create(log_path, LogRunInfo::from(setup.scene, setup.options, setup.initial.species_names),
-                                    LogSettings::from(setup.scene.log), resumption ? &resumption->continuation : nullptr);
+                                    settings, resumption ? &resumption->continuation : nullptr,
+                                    resumption ? &resumption->point.disks : nullptr);
       if (!w) return Error{w.error().message, ErrorKind::Io};
       log = std::move(w).value();
     }

@@ -1,0 +1,156 @@
+// What replay predicts of a logged event from the replayed state just before it (format version 2,
+// schema/FORMAT.md "Predictions"): the post-event velocities by the engine's own collision rules, and
+// the event's time by the engine's own contact, wall and cell-exit time functions. Writer and reader call
+// these same functions with the same inputs, so a prediction is the same bits on both sides; the log
+// stores only the residual against it, which is 0 (one byte, compressed to almost nothing) whenever the
+// engine computed exactly this.
+//
+// The rules are the engine's (engine/collide.hpp, engine/predict_pair.hpp, core/geometry.hpp), called, not
+// copied: when the engine changes a rule, old logs still decode (the residuals carry the difference) and
+// new logs simply grow until the predictor follows. What the engine knows and replay does not is either
+// in the header (restitution per species pair and per wall) or in the event itself (the TC model's
+// "this collision was made elastic" flag, one bit of the kind byte), so no prediction needs history.
+// A pair's time is predicted at now = the later of the two records' times, which is when the engine
+// predicted it unless it did so at a cell crossing, a rebuild or before a periodic wrap of one of them:
+// then the residual is a few ulps (a few bytes), never wrong.
+// Rejected: tracking TC collision times in replay (non-resumable keyframes do not carry them, so a seek
+// would have to start at a resumable one) and storing the engine's prediction time with each event (as
+// large as the time residual it would save).
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "core/drift.hpp"
+#include "core/event.hpp"
+#include "core/geometry.hpp"
+#include "core/particles.hpp"
+#include "engine/collide.hpp"
+#include "engine/predict_pair.hpp"
+
+namespace ede {
+
+// The header's physics, in the run's scalar type, as the predictors need it.
+template <class T>
+struct EventPhysics {
+  T lx = 1, ly = 1, half_lx = T(0.5), half_ly = T(0.5);
+  bool periodic = false;
+  T gx = 0, gy = 0;
+  T b_noise2 = 0;
+  std::size_t species = 1;
+  std::vector<T> one_plus_xi{T(2)};  // species x species, row-major: 1 + xi of the pair
+  T xi_wall[4] = {1, 1, 1, 1};
+  bool tc_model = false;  // writer only: the run may make collisions elastic (ChunkEncoder's TC flag)
+
+  // The box as the engine sets it up (engine_core.hpp: lx_, half_lx_, b_noise2_).
+  static EventPhysics box(double lx, double ly, bool periodic, T gx, T gy) {
+    EventPhysics p;
+    p.lx = T(lx), p.ly = T(ly);
+    p.half_lx = p.lx / 2, p.half_ly = p.ly / 2;
+    p.periodic = periodic;
+    p.gx = gx, p.gy = gy;
+    p.b_noise2 = b_noise2_for(std::max(p.lx, p.ly));
+    return p;
+  }
+  T pair_one_plus_xi(std::int32_t si, std::int32_t sj) const {
+    const std::size_t a = std::size_t(si), b = std::size_t(sj);
+    if (a >= species || b >= species) return one_plus_xi[0];
+    return one_plus_xi[a * species + b];
+  }
+};
+
+// Post-collision velocities of pair (i, j) at time t, as Engine::resolve_pair computes them: both records
+// brought to t, the separation with the nearest periodic image, the collision rule with 1 + xi of the
+// pair (2 when the TC model made it elastic).
+template <class T>
+inline void predict_pair_velocities(const EventPhysics<T>& ph, const Particles<T>& p, std::int32_t i,
+                                    std::int32_t j, T t, bool tc_elastic, T v[4]) {
+  Disk<T> a = p.disk[std::size_t(i)], b = p.disk[std::size_t(j)];
+  advance_disk(a, t, ph.gx, ph.gy);
+  advance_disk(b, t, ph.gx, ph.gy);
+  T dx = b.x - a.x, dy = b.y - a.y;
+  if (ph.periodic) {
+    if (dx > ph.half_lx) dx -= ph.lx; else if (dx < -ph.half_lx) dx += ph.lx;
+    if (dy > ph.half_ly) dy -= ph.ly; else if (dy < -ph.half_ly) dy += ph.ly;
+  }
+  const T opx = tc_elastic ? T(2) : ph.pair_one_plus_xi(p.species[std::size_t(i)], p.species[std::size_t(j)]);
+  v[0] = a.vx, v[1] = a.vy, v[2] = b.vx, v[3] = b.vy;
+  collide_pair(dx, dy, p.mass[std::size_t(i)], p.mass[std::size_t(j)], opx, v[0], v[1], v[2], v[3]);
+}
+
+// Velocity after disk i hits `wall` at time t (Engine::resolve_wall). With xi_w = 1 collide_wall computes
+// exactly what collide_wall_elastic does (a multiplication by 1 and a negation are exact).
+template <class T>
+inline void predict_wall_velocity(const EventPhysics<T>& ph, const Particles<T>& p, std::int32_t i,
+                                  std::int32_t wall, T t, bool tc_elastic, T v[2]) {
+  v[0] = p.vx_at(std::size_t(i), t), v[1] = p.vy_at(std::size_t(i), t);
+  const bool vertical = wall == kWallLeft || wall == kWallRight;
+  if (tc_elastic)
+    collide_wall_elastic(vertical, v[0], v[1]);
+  else
+    collide_wall(vertical, ph.xi_wall[wall & 3], v[0], v[1]);
+}
+
+// Time of pair (i, j): predicted by the disk whose record is later (i on a tie), at now = that record's
+// time, against the partner's image nearest at now (Engine::pair_time; predict_pair without gravity).
+template <class T>
+inline T predict_pair_time(const EventPhysics<T>& ph, const Particles<T>& p, std::int32_t i, std::int32_t j) {
+  const Disk<T>* di = &p.disk[std::size_t(i)];
+  const Disk<T>* dj = &p.disk[std::size_t(j)];
+  if (dj->t > di->t) std::swap(di, dj);
+  const T now = di->t;
+  const T pix = position_along(di->x, di->vx, ph.gx, di->t, now), piy = position_along(di->y, di->vy, ph.gy, di->t, now);
+  const T pjx = position_along(dj->x, dj->vx, ph.gx, dj->t, now), pjy = position_along(dj->y, dj->vy, ph.gy, dj->t, now);
+  T sx = 0, sy = 0;
+  if (ph.periodic) {
+    const T ex = pjx - pix, ey = pjy - piy;
+    sx = ex > ph.half_lx ? -ph.lx : ex < -ph.half_lx ? ph.lx : T(0);
+    sy = ey > ph.half_ly ? -ph.ly : ey < -ph.half_ly ? ph.ly : T(0);
+  }
+  if (ph.gx == T(0) && ph.gy == T(0))
+    return predict_pair<StableContact>(*di, Position2<T>{pix, piy}, *dj, sx, sy, now, ph.b_noise2);
+  const T vix = velocity_along(di->vx, ph.gx, di->t, now), viy = velocity_along(di->vy, ph.gy, di->t, now);
+  const T vjx = velocity_along(dj->vx, ph.gx, dj->t, now), vjy = velocity_along(dj->vy, ph.gy, dj->t, now);
+  return now + StableContact::time((pjx + sx) - pix, (pjy + sy) - piy, vjx - vix, vjy - viy, di->r + dj->r,
+                                   ph.b_noise2);
+}
+
+// Time disk i hits `wall`, from its record alone (predict_wall; predict_wall_accelerated at now = the
+// record's time).
+template <class T>
+inline T predict_wall_time(const EventPhysics<T>& ph, const Disk<T>& d, std::int32_t wall) {
+  if (ph.gx == T(0) && ph.gy == T(0)) {
+    switch (wall) {
+      case kWallRight: return d.vx > 0 ? d.t + time_to_reach(d.x, d.vx, ph.lx - d.r) : kNever<T>;
+      case kWallLeft: return d.vx < 0 ? d.t + time_to_reach(d.x, d.vx, d.r) : kNever<T>;
+      case kWallTop: return d.vy > 0 ? d.t + time_to_reach(d.y, d.vy, ph.ly - d.r) : kNever<T>;
+      case kWallBottom: return d.vy < 0 ? d.t + time_to_reach(d.y, d.vy, d.r) : kNever<T>;
+      default: return kNever<T>;
+    }
+  }
+  T dt = kNever<T>;
+  switch (wall) {
+    case kWallLeft: dt = time_to_reach_accelerated(d.x - d.r, d.vx, ph.gx, T(0)); break;
+    case kWallRight: dt = time_to_reach_accelerated((ph.lx - d.r) - d.x, -d.vx, -ph.gx, T(0)); break;
+    case kWallBottom: dt = time_to_reach_accelerated(d.y - d.r, d.vy, ph.gy, T(0)); break;
+    case kWallTop: dt = time_to_reach_accelerated((ph.ly - d.r) - d.y, -d.vy, -ph.gy, T(0)); break;
+    default: break;
+  }
+  return dt == kNever<T> ? kNever<T> : d.t + dt;
+}
+
+// Time disk i crosses the periodic edge `dir` (predict_crossing against the grid's outer sides, which are
+// exactly 0 and the box length).
+template <class T>
+inline T predict_wrap_time(const EventPhysics<T>& ph, const Disk<T>& d, std::int32_t dir) {
+  switch (dir) {
+    case kWrapRight: return d.vx > 0 ? d.t + time_to_reach(d.x, d.vx, ph.lx) : kNever<T>;
+    case kWrapLeft: return d.vx < 0 ? d.t + time_to_reach(d.x, d.vx, T(0)) : kNever<T>;
+    case kWrapTop: return d.vy > 0 ? d.t + time_to_reach(d.y, d.vy, ph.ly) : kNever<T>;
+    case kWrapBottom: return d.vy < 0 ? d.t + time_to_reach(d.y, d.vy, T(0)) : kNever<T>;
+    default: return kNever<T>;
+  }
+}
+
+}  // namespace ede

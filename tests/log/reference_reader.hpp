@@ -1,0 +1,341 @@
+// A reference reader of the chunk columns and state of an ede log (format versions 1 and 2), written from
+// schema/FORMAT.md alone, as the test oracle for the fast reader (log/chunk_decode.cpp, replay/replay.cpp).
+//
+// Plain on purpose: no engine or library code for the columns, predictions or state updates (only the
+// framing, LogReader::load_message, and Cap'n Proto to open a message); straightforward loops over every
+// event from the first keyframe, no cursors, no checks beyond what a valid log needs. Where it and the fast
+// reader disagree, one of them does not do what FORMAT.md says.
+// Rejected: calling the library's predictors (then the oracle could not catch a predictor that drifted
+// from the document, which is what an independent reader is for).
+#pragma once
+
+#include <capnp/serialize.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <functional>
+#include <limits>
+#include <vector>
+
+#include "ede_log.capnp.h"
+#include "log/log_messages.hpp"
+#include "log/log_reader.hpp"
+
+namespace ede::reference {
+
+using U128 = unsigned __int128;
+using I128 = __int128;
+
+template <class T>
+constexpr int kBits = sizeof(T) == 4 ? 32 : sizeof(T) == 8 ? 64 : 80;
+template <class T>
+constexpr std::size_t kWidth = std::size_t(kBits<T> / 8);
+
+template <class T>
+struct Record {
+  T x{}, y{}, vx{}, vy{}, t{}, r{}, m{};
+  std::uint32_t species = 0;
+};
+
+template <class T>
+T scalar_at(const unsigned char* p) {
+  T v{};
+  std::memcpy(&v, p, kWidth<T>);
+  return v;
+}
+
+// n values of w bytes stored byte plane by byte plane: byte b of value k is at b n + k.
+inline std::vector<unsigned char> unshuffle(const unsigned char* in, std::size_t size, std::size_t w) {
+  const std::size_t n = size / w;
+  std::vector<unsigned char> out(size);
+  for (std::size_t k = 0; k < n; ++k)
+    for (std::size_t b = 0; b < w; ++b) out[k * w + b] = in[b * n + k];
+  return out;
+}
+
+template <class T>
+std::vector<T> shuffled_scalars(const unsigned char* in, std::size_t size) {
+  const std::vector<unsigned char> raw = unshuffle(in, size, kWidth<T>);
+  std::vector<T> out;
+  for (std::size_t k = 0; k < raw.size(); k += kWidth<T>) out.push_back(scalar_at<T>(raw.data() + k));
+  return out;
+}
+
+template <class T>
+U128 key_of(T v) {
+  U128 bits = 0;
+  std::memcpy(&bits, &v, kWidth<T>);
+  const U128 sign = U128(1) << (kBits<T> - 1);
+  const U128 mask = (sign << 1) - 1;
+  bits &= mask;
+  return (bits & sign) ? (~bits & mask) : (bits | sign);
+}
+
+template <class T>
+T value_of_key(U128 key) {
+  const U128 sign = U128(1) << (kBits<T> - 1);
+  const U128 mask = (sign << 1) - 1;
+  const U128 bits = (key & sign) ? (key & ~sign & mask) : (~key & mask);
+  T v{};
+  std::memcpy(&v, &bits, kWidth<T>);
+  return v;
+}
+
+inline I128 unzig(U128 v) { return I128(v >> 1) ^ -I128(v & 1); }
+
+struct Bytes {
+  const unsigned char* p;
+  const unsigned char* end;
+  U128 varint() {
+    U128 v = 0;
+    for (int shift = 0; p < end; shift += 7) {
+      const unsigned char b = *p++;
+      v |= U128(b & 0x7F) << shift;
+      if (!(b & 0x80)) break;
+    }
+    return v;
+  }
+  unsigned char byte() { return *p++; }
+};
+
+template <class T>
+class Reader {
+ public:
+  explicit Reader(const LogReader& log) : log_(log) {
+    const LogHeaderInfo& h = log.header();
+    const std::vector<T> radius = shuffled_scalars<T>(h.radius.data(), h.radius.size());
+    const std::vector<T> mass = shuffled_scalars<T>(h.mass.data(), h.mass.size());
+    disk_.resize(h.disks);
+    for (std::size_t i = 0; i < disk_.size(); ++i) disk_[i].r = radius[i], disk_[i].m = mass[i], disk_[i].species = h.species[i];
+    lx_ = T(h.lx), ly_ = T(h.ly);
+    periodic_ = h.boundary == BoundaryKind::Periodic;
+    gx_ = T(h.gx), gy_ = T(h.gy);
+    version_ = h.column_encoding;
+    species_ = std::max<std::size_t>(1, h.species_names.size());
+    for (std::size_t k = 0; k < h.pair_one_plus_xi.size(); k += kWidth<T>)
+      one_plus_xi_.push_back(scalar_at<T>(h.pair_one_plus_xi.data() + k));
+    for (std::size_t k = 0; k < h.wall_restitution.size(); k += kWidth<T>)
+      xi_wall_.push_back(scalar_at<T>(h.wall_restitution.data() + k));
+  }
+
+  // Replays the whole log from its first keyframe; after each chunk, `check(events so far, records)`.
+  void run(const std::function<void(std::uint64_t, const std::vector<Record<T>>&)>& check) {
+    load_first_keyframe();
+    std::uint64_t events = 0;
+    for (const LogRecordRef& ref : log_.chunks()) {
+      auto words = log_.load_message(ref.offset, ref.payload_size);
+      capnp::FlatArrayMessageReader message(as_words(words.value()), reader_options(words.value()));
+      const auto c = message.getRoot<logschema::Chunk>();
+      decode_chunk(c, std::uint32_t(ref.count));
+      events += ref.count;
+      check(events, disk_);
+    }
+  }
+
+ private:
+  void load_first_keyframe() {
+    const LogRecordRef& ref = log_.keyframes().front();
+    auto words = log_.load_message(ref.offset, ref.payload_size);
+    capnp::FlatArrayMessageReader message(as_words(words.value()), reader_options(words.value()));
+    const auto k = message.getRoot<logschema::Keyframe>();
+    const auto col = [](capnp::Data::Reader d) { return shuffled_scalars<T>(d.begin(), d.size()); };
+    const std::vector<T> x = col(k.getX()), y = col(k.getY()), vx = col(k.getVx()), vy = col(k.getVy()), t = col(k.getT());
+    for (std::size_t i = 0; i < disk_.size(); ++i)
+      disk_[i].x = x[i], disk_[i].y = y[i], disk_[i].vx = vx[i], disk_[i].vy = vy[i], disk_[i].t = t[i];
+  }
+
+  // "Bring a disk to t", with gravity g along each axis (none: x + v (t - t_disk)).
+  T pos(T x, T v, T g, T t0, T t) const {
+    if (g == T(0)) return x + v * (t - t0);
+    const T dt = t - t0;
+    return x + v * dt + g * dt * dt / T(2);
+  }
+  T vel(T v, T g, T t0, T t) const { return g == T(0) ? v : v + g * (t - t0); }
+  void bring(Record<T>& d, T t) const {
+    const T x = pos(d.x, d.vx, gx_, d.t, t), y = pos(d.y, d.vy, gy_, d.t, t);
+    d.vx = vel(d.vx, gx_, d.t, t), d.vy = vel(d.vy, gy_, d.t, t);
+    d.x = x, d.y = y, d.t = t;
+  }
+
+  static T never() { return std::numeric_limits<T>::infinity(); }
+  static T reach(T x, T v, T target) {
+    if (v > 0) return target - x > 0 ? (target - x) / v : T(0);
+    if (v < 0) return x - target > 0 ? (x - target) / -v : T(0);
+    return never();
+  }
+  // time_to_reach_accelerated(s, u, a, 0) as FORMAT.md names it (core/geometry.hpp, written out).
+  static T reach_accelerated(T s, T u, T a) {
+    const T z = T(0);
+    const T s_now = s + u * z + a * z * z / T(2), u_now = u + a * z;
+    const bool leaving = s_now < T(0) && (u_now < T(0) || (u_now == T(0) && a < T(0)));
+    if (a == T(0)) {
+      if (!(u < T(0))) return never();
+      const T t = s / -u;
+      return t >= z ? t : (leaving ? z : never());
+    }
+    const T d = u * u - T(2) * a * s;
+    if (d < T(0) || (d == T(0) && a > T(0))) return leaving ? z : never();
+    const T root = std::sqrt(d);
+    const T q = u < T(0) ? (-u + root) / T(2) : -(u + root) / T(2);
+    const T r1 = q / (a / T(2));
+    const T r2 = q != T(0) ? s / q : r1;
+    const T outward = a < T(0) ? std::max(r1, r2) : std::min(r1, r2);
+    if (outward >= z) return outward;
+    return leaving ? z : never();
+  }
+
+  T predict_time(int kind, std::int32_t i, std::int32_t j) const {
+    if (kind == 1) {
+      const Record<T>& d = disk_[std::size_t(i)];
+      if (gx_ == T(0) && gy_ == T(0)) {
+        if (j == 1) return d.vx > 0 ? d.t + reach(d.x, d.vx, lx_ - d.r) : never();
+        if (j == 0) return d.vx < 0 ? d.t + reach(d.x, d.vx, d.r) : never();
+        if (j == 3) return d.vy > 0 ? d.t + reach(d.y, d.vy, ly_ - d.r) : never();
+        return d.vy < 0 ? d.t + reach(d.y, d.vy, d.r) : never();
+      }
+      T tau = never();
+      if (j == 0) tau = reach_accelerated(d.x - d.r, d.vx, gx_);
+      if (j == 1) tau = reach_accelerated((lx_ - d.r) - d.x, -d.vx, -gx_);
+      if (j == 2) tau = reach_accelerated(d.y - d.r, d.vy, gy_);
+      if (j == 3) tau = reach_accelerated((ly_ - d.r) - d.y, -d.vy, -gy_);
+      return tau == never() ? never() : d.t + tau;
+    }
+    if (kind == 3) {
+      const Record<T>& d = disk_[std::size_t(i)];
+      if (j == 0) return d.vx > 0 ? d.t + reach(d.x, d.vx, lx_) : never();
+      if (j == 1) return d.vx < 0 ? d.t + reach(d.x, d.vx, T(0)) : never();
+      if (j == 2) return d.vy > 0 ? d.t + reach(d.y, d.vy, ly_) : never();
+      return d.vy < 0 ? d.t + reach(d.y, d.vy, T(0)) : never();
+    }
+    if (kind != 0) return never();
+    const Record<T>* a = &disk_[std::size_t(i)];
+    const Record<T>* b = &disk_[std::size_t(j)];
+    if (b->t > a->t) std::swap(a, b);
+    const T now = a->t;
+    const T ax = pos(a->x, a->vx, gx_, a->t, now), ay = pos(a->y, a->vy, gy_, a->t, now);
+    const T bx = pos(b->x, b->vx, gx_, b->t, now), by = pos(b->y, b->vy, gy_, b->t, now);
+    T sx = 0, sy = 0;
+    if (periodic_) {
+      const T hx = lx_ / 2, hy = ly_ / 2;
+      sx = (bx - ax) > hx ? -lx_ : (bx - ax) < -hx ? lx_ : T(0);
+      sy = (by - ay) > hy ? -ly_ : (by - ay) < -hy ? ly_ : T(0);
+    }
+    const T dx = (bx + sx) - ax, dy = (by + sy) - ay;
+    const T dvx = vel(b->vx, gx_, b->t, now) - vel(a->vx, gx_, a->t, now);
+    const T dvy = vel(b->vy, gy_, b->t, now) - vel(a->vy, gy_, a->t, now);
+    const T sigma = a->r + b->r;
+    const T bb = dx * dvx + dy * dvy;
+    if (!(bb < 0)) return never();
+    const T aa = dvx * dvx + dvy * dvy;
+    const T floor = T(8) * std::numeric_limits<T>::epsilon() * std::max(lx_, ly_);
+    if (bb * bb <= floor * floor * aa) return never();
+    const T c = (dx * dx + dy * dy) - sigma * sigma;
+    if (c <= 0) return now;
+    const T d = bb * bb - aa * c;
+    if (!(d > 0)) return never();
+    return now + c / (-bb + std::sqrt(d));
+  }
+
+  T read_residual(Bytes& col, T predicted) { return value_of_key<T>(key_of(predicted) + U128(unzig(col.varint()))); }
+
+  void decode_chunk(logschema::Chunk::Reader c, std::uint32_t count) {
+    Bytes times{c.getTimes().begin(), c.getTimes().end()}, kinds{c.getKinds().begin(), c.getKinds().end()};
+    Bytes disks{c.getDisks().begin(), c.getDisks().end()}, partners{c.getPartners().begin(), c.getPartners().end()};
+    Bytes residuals{c.getVelocityResiduals().begin(), c.getVelocityResiduals().end()};
+    const std::vector<unsigned char> raw = unshuffle(c.getVelocitiesRaw().begin(), c.getVelocitiesRaw().size(), kWidth<T>);
+    std::size_t raw_at = 0;
+    U128 previous = 0;
+    for (std::uint32_t e = 0; e < count; ++e) {
+      T t{};
+      if (version_ == 1) {
+        previous += times.varint();
+        t = value_of_key<T>(previous);
+      }
+      const unsigned char byte = kinds.byte();
+      const int kind = version_ >= 2 ? (byte & ~16) : byte;
+      const bool tc = version_ >= 2 && (byte & 16);
+      std::int32_t i = -1, j = -1;
+      if (kind == 0 || kind == 1 || kind == 3) {
+        i = std::int32_t(disks.varint());
+        const U128 p = partners.varint();
+        j = kind == 0 ? std::int32_t(i + unzig(p)) : std::int32_t(p);
+      }
+      if (version_ >= 2) {
+        const U128 code = times.varint();
+        const U128 key = (code & 1) ? previous + (code >> 1) : key_of(predict_time(kind, i, j)) + U128(unzig(code >> 1));
+        previous = key;
+        t = value_of_key<T>(key);
+      }
+      if (kind == 0) {
+        Record<T>& a = disk_[std::size_t(i)];
+        Record<T>& b = disk_[std::size_t(j)];
+        bring(a, t);
+        bring(b, t);
+        T v[4];
+        if (version_ == 1) {
+          v[0] = scalar_at<T>(raw.data() + raw_at), v[1] = scalar_at<T>(raw.data() + raw_at + kWidth<T>);
+          raw_at += 2 * kWidth<T>;
+          v[2] = read_residual(residuals, ((a.m * a.vx + b.m * b.vx) - a.m * v[0]) / b.m);
+          v[3] = read_residual(residuals, ((a.m * a.vy + b.m * b.vy) - a.m * v[1]) / b.m);
+        } else {
+          T dx = b.x - a.x, dy = b.y - a.y;
+          if (periodic_) {
+            if (dx > lx_ / 2) dx = dx - lx_; else if (dx < -(lx_ / 2)) dx = dx + lx_;
+            if (dy > ly_ / 2) dy = dy - ly_; else if (dy < -(ly_ / 2)) dy = dy + ly_;
+          }
+          const T k = tc ? T(2) : one_plus_xi_[a.species * species_ + b.species];
+          const T dist = std::sqrt(dx * dx + dy * dy);
+          const T nx = dx / dist, ny = dy / dist;
+          const T vn = (b.vx - a.vx) * nx + (b.vy - a.vy) * ny;
+          const T impulse = k * vn / (a.m + b.m);
+          const T ki = impulse * b.m, kj = impulse * a.m;
+          v[0] = read_residual(residuals, a.vx + ki * nx);
+          v[1] = read_residual(residuals, a.vy + ki * ny);
+          v[2] = read_residual(residuals, b.vx - kj * nx);
+          v[3] = read_residual(residuals, b.vy - kj * ny);
+        }
+        a.vx = v[0], a.vy = v[1], b.vx = v[2], b.vy = v[3];
+      } else if (kind == 1) {
+        Record<T>& a = disk_[std::size_t(i)];
+        bring(a, t);
+        const bool vertical = j == 0 || j == 1;
+        T px, py;
+        if (version_ == 1 || tc) {
+          px = vertical ? -a.vx : a.vx, py = vertical ? a.vy : -a.vy;
+        } else {
+          const T xi = xi_wall_[std::size_t(j)];
+          px = vertical ? -xi * a.vx : xi * a.vx, py = vertical ? xi * a.vy : -xi * a.vy;
+        }
+        const T vx = read_residual(residuals, px);
+        a.vy = read_residual(residuals, py);
+        a.vx = vx;
+      } else if (kind == 3) {
+        Record<T>& a = disk_[std::size_t(i)];
+        a.x = a.x + a.vx * (t - a.t);
+        a.y = a.y + a.vy * (t - a.t);
+        a.t = t;
+        if (j == 0) a.x = a.x - lx_;
+        if (j == 1) a.x = a.x + lx_;
+        if (j == 2) a.y = a.y - ly_;
+        if (j == 3) a.y = a.y + ly_;
+      } else if (kind == 4) {
+        for (Record<T>& d : disk_) {
+          bring(d, t);
+          d.vx = -d.vx, d.vy = -d.vy;
+        }
+      }
+    }
+  }
+
+  const LogReader& log_;
+  std::vector<Record<T>> disk_;
+  T lx_{}, ly_{}, gx_{}, gy_{};
+  bool periodic_ = false;
+  std::uint32_t version_ = 1;
+  std::size_t species_ = 1;
+  std::vector<T> one_plus_xi_, xi_wall_;
+};
+
+}  // namespace ede::reference
