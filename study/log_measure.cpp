@@ -60,6 +60,12 @@ int timed_run(const RunConfig& c, const Scene& scene, const InitialState& initia
     log = std::move(w).value();
     engine.add_sink(log.get());
   }
+  if (c.warmup_collisions_per_disk > 0) {
+    const double target = c.warmup_collisions_per_disk * double(initial.size()) / 2;
+    while (double(engine.counts().of(EventKind::Pair)) < target)
+      if (engine.run(std::max<std::uint64_t>(1000, initial.size() / 4)) != RunStatus::Running) break;
+  }
+  const std::uint64_t pairs0 = engine.counts().of(EventKind::Pair);
   CpuCycles cycles;
   const CpuTimes cpu0 = cpu_times();
   cycles.start();
@@ -75,7 +81,8 @@ int timed_run(const RunConfig& c, const Scene& scene, const InitialState& initia
   o << "disks=" << initial.size() << " events=" << n.events() << " collisions=" << n.collisions()
     << " logged=" << (log ? log->events_logged() : 0) << " bytes=" << (log ? log->bytes_written() : 0)
     << " sim_time=" << double(engine.time()) << " wall=" << wall << " cycles=" << cyc
-    << " cpu_process=" << cpu1.process - cpu0.process << " cpu_main=" << cpu1.thread - cpu0.thread;
+    << " cpu_process=" << cpu1.process - cpu0.process << " cpu_main=" << cpu1.thread - cpu0.thread
+    << " timed_pairs=" << n.of(EventKind::Pair) - pairs0 << " engine_bytes=" << engine.memory_bytes();
   out = o.str();
   return 0;
 }
@@ -110,6 +117,8 @@ RunResult run_measured(const RunConfig& c) {
   m.logged = get(kv, "logged"), m.bytes = get(kv, "bytes"), m.sim_time = get(kv, "sim_time");
   m.wall = get(kv, "wall"), m.cycles = get(kv, "cycles");
   m.cpu_process = get(kv, "cpu_process"), m.cpu_main = get(kv, "cpu_main");
+  m.timed_pairs = get(kv, "timed_pairs"), m.engine_bytes = get(kv, "engine_bytes");
+  m.peak_rss = r.peak_rss;
   return m;
 }
 

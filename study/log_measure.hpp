@@ -39,6 +39,9 @@ struct RunConfig {
   EngineVariant variant;                // the study's engine variant (accuracy: the contact root)
   bool log = false;
   LogSettings settings;
+  // Pair collisions per disk run before the clock starts (0: time from the start). The peers' way of
+  // measuring a steady segment (ede-bench peers); the log, if any, records the warm-up too.
+  double warmup_collisions_per_disk = 0;
   std::string log_path;
 };
 
@@ -47,6 +50,8 @@ struct RunResult {
   std::string failure;
   double disks = 0, events = 0, collisions = 0, logged = 0, bytes = 0, sim_time = 0;
   double wall = 0, cycles = 0, cpu_process = 0, cpu_main = 0;
+  double timed_pairs = 0;  // pair collisions inside the timed segment
+  double engine_bytes = 0, peak_rss = 0;
   double cpu_worker() const { return cpu_process - cpu_main > 0 ? cpu_process - cpu_main : 0; }
 };
 

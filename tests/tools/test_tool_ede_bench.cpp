@@ -26,7 +26,7 @@ TEST_CASE("ede-bench: a bad command line exits with status 2 and CLI11's message
 }
 
 TEST_CASE("ede-bench: every command and subcommand answers --help and --version", "[tool][ede-bench]") {
-  for (const std::string sub : {"", "speed", "log", "stress", "effects", "accuracy"}) {
+  for (const std::string sub : {"", "speed", "log", "stress", "effects", "accuracy", "peers"}) {
     INFO(sub);
     const ToolRun help = run_tool("ede-bench", sub + " --help", "bench-help");
     CHECK(help.status == 0);
@@ -59,6 +59,22 @@ TEST_CASE("ede-bench: --set is checked like the scene's own value before anythin
   const std::vector<std::string> rows = lines(read_file(csv));
   REQUIRE(rows.size() == 2);
   CHECK(rows[1].rfind("gas-N1000-phi0.5-walls,1000,20000,", 0) == 0);
+}
+
+TEST_CASE("ede-bench peers: a row per scene, log on and off after the warm-up, the CSV beside", "[tool][ede-bench]") {
+  const std::string scene = source_path("examples/bench/gas-N1000-phi0.5-periodic.toml");
+  const std::string csv = temp_path("bench-peers.csv");
+  const ToolRun r = run_tool("ede-bench",
+                             "peers " + scene + " --repeat 1 --warmup 2 --segment 2 --tmp-dir " + std::string(EDE_BINARY_DIR) + "/tests" +
+                                 " -o " + csv,
+                             "bench-peers", 120);
+  INFO(r.out << r.err);
+  REQUIRE(r.status == 0);
+  CHECK(r.out.find("| gas-N1000-phi0.5-periodic | 1000 | ") != std::string::npos);
+  const std::vector<std::string> rows = lines(read_file(csv));
+  REQUIRE(rows.size() == 2);
+  CHECK(rows[1].rfind("gas-N1000-phi0.5-periodic,1000,", 0) == 0);
+  CHECK(run_tool("ede-bench", "peers " + scene + " --segment 0", "bench-peers-segment").status == 2);
 }
 
 TEST_CASE("ede-bench stress: packing 0.8 and restitution 0.5 with TC keep every invariant (small)", "[tool][ede-bench][stress]") {

@@ -18,6 +18,7 @@ struct Command {
 };
 
 Command speed_command(CLI::App& app);
+Command peers_command(CLI::App& app);
 Command log_command(CLI::App& app);
 Command stress_command(CLI::App& app);
 Command effects_command(CLI::App& app);

@@ -365,8 +365,8 @@ class Engine final : public EngineApi<T> {
   }
 
   // Disk i (at pi with velocity vi, now) against disk k's image shifted by (sx, sy): keeps the earlier.
-  void consider_pair(std::int32_t i, Position2<T> pi, Position2<T> vi, std::int32_t k, T sx, T sy,
-                     Candidate<T>& best) const {
+  [[gnu::always_inline]] void consider_pair(std::int32_t i, Position2<T> pi, Position2<T> vi, std::int32_t k, T sx,
+                                           T sy, Candidate<T>& best) const {
     const Disk<T>& di = p_.disk[i];
     const Disk<T>& dk = p_.disk[k];
     if (k == di.last_partner) {
@@ -383,6 +383,29 @@ class Engine final : public EngineApi<T> {
   void scan_cell(std::int32_t i, Position2<T> pi, Position2<T> vi, std::int32_t cx, std::int32_t cy,
                  Candidate<T>& best) const {
     visit_cell(i, cx, cy, [&](std::int32_t k, T sx, T sy) { consider_pair(i, pi, vi, k, sx, sy, best); });
+  }
+
+  // The 3 x 3 cells around (cx, cy), in scan_cell's order (rows from below, columns from the left), with
+  // the three columns' and rows' wrapping worked out once instead of once per cell: what predict() does
+  // for every small disk, ~40 % of the run. (The order does not change the result: Candidate's order is
+  // total; it is kept anyway.)
+  void scan_3x3(std::int32_t i, Position2<T> pi, Position2<T> vi, std::int32_t cx, std::int32_t cy,
+                Candidate<T>& best) const {
+    std::int32_t col[3], row[3];
+    T sx[3], sy[3];
+    int ncol = 0, nrow = 0;
+    for (std::int32_t d = -1; d <= 1; ++d) {
+      std::int32_t c = cx + d;
+      T s = 0;
+      if (wrap_index(c, grid_.nx(), lx_, s)) col[ncol] = c, sx[ncol++] = s;
+      c = cy + d;
+      s = 0;
+      if (wrap_index(c, grid_.ny(), ly_, s)) row[nrow] = c, sy[nrow++] = s;
+    }
+    for (int r = 0; r < nrow; ++r)
+      for (int c = 0; c < ncol; ++c)
+        for (std::int32_t k = grid_.head(grid_.cell_at(col[c], row[r])); k != CellGrid<T>::kNone; k = grid_.next(k))
+          if (k != i) consider_pair(i, pi, vi, k, sx[c], sy[r], best);
   }
 
   // --- big disks (big_disks.hpp) -----------------------------------------------------------------
@@ -454,8 +477,12 @@ class Engine final : public EngineApi<T> {
       const BigDisk& b = big_entry(i);
       reach_x = b.reach_x, reach_y = b.reach_y;
     }
-    for (std::int32_t dy = -reach_y; dy <= reach_y; ++dy)
-      for (std::int32_t dx = -reach_x; dx <= reach_x; ++dx) scan_cell(i, pi, vi, cx + dx, cy + dy, best);
+    if (!big) {
+      scan_3x3(i, pi, vi, cx, cy, best);
+    } else {
+      for (std::int32_t dy = -reach_y; dy <= reach_y; ++dy)
+        for (std::int32_t dx = -reach_x; dx <= reach_x; ++dx) scan_cell(i, pi, vi, cx + dx, cy + dy, best);
+    }
     if (!big_.empty()) scan_big(i, pi, vi, big, best);
     Prediction& pr = pred_[i];
     pr.t_coll = best.time;
