@@ -68,11 +68,7 @@ void bind_analysis(py::module_& m) {
             throw py::value_error("quantity: expected \"speed\" or \"energy\", got \"" + quantity + "\"");
           r.quantity = quantity == "speed" ? Quantity::Speed : Quantity::Energy;
           r.bins = bins;
-          Result<DistributionReport> made = [&] {
-            py::gil_scoped_release release;
-            return measure_distribution(log, r);
-          }();
-          const DistributionReport rep = value_or_raise(std::move(made));
+          const DistributionReport rep = released([&] { return measure_distribution(log, r); });
           py::dict d;
           d["disks"] = rep.disks, d["samples"] = rep.samples, d["kT"] = rep.kT;
           d["ks"] = ks_dict(rep.ks);
@@ -91,11 +87,7 @@ void bind_analysis(py::module_& m) {
     if (!to.is_none()) r.to = to.cast<double>();
     if (!every.is_none()) r.every = every.cast<double>();
     if (!points.is_none()) r.points = points.cast<std::size_t>();
-    Result<EnergyCurve> made = [&] {
-      py::gil_scoped_release release;
-      return energy_curve(log, r);
-    }();
-    const EnergyCurve c = value_or_raise(std::move(made));
+    const EnergyCurve c = released([&] { return energy_curve(log, r); });
     py::dict d = series_dict(c.series);
     d["restitution"] = c.restitution, d["spacing"] = c.spacing, d["mean_free_time"] = c.mean_free_time;
     d["initial_energy"] = c.initial_energy, d["haff_tau"] = c.haff_tau;
@@ -107,11 +99,7 @@ void bind_analysis(py::module_& m) {
   });
   m.def("collision_series", [](const Log& log, py::object times) {
     const std::vector<double> t = double_times(times);
-    Result<CollisionSeries> made = [&] {
-      py::gil_scoped_release release;
-      return collision_series(log, t);
-    }();
-    const CollisionSeries c = value_or_raise(std::move(made));
+    const CollisionSeries c = released([&] { return collision_series(log, t); });
     py::dict d = series_dict(c.series);
     d["reference_speed"] = c.reference_speed;
     d["rate"] = arr(c.rate), d["mean_free_time"] = arr(c.mean_free_time);
@@ -123,12 +111,8 @@ void bind_analysis(py::module_& m) {
   });
   m.def("species_stats", [](const Log& log, py::object times) {
     const std::vector<double> t = double_times(times);
-    Result<std::vector<SpeciesTable>> made = [&] {
-      py::gil_scoped_release release;
-      return species_tables(log, t);
-    }();
     py::list out;
-    for (const SpeciesTable& table : value_or_raise(std::move(made))) {
+    for (const SpeciesTable& table : released([&] { return species_tables(log, t); })) {
       for (const SpeciesStats& s : table.rows) {
         py::dict d;
         d["time"] = table.time, d["species"] = s.name, d["n"] = s.n;
@@ -146,11 +130,7 @@ void bind_analysis(py::module_& m) {
     if (!from.is_none()) o.from = from.cast<double>();
     if (!to.is_none()) o.to = to.cast<double>();
     o.blocks = blocks;
-    Result<PressureReport> made = [&] {
-      py::gil_scoped_release release;
-      return measure_pressure(log, o);
-    }();
-    const PressureReport p = value_or_raise(std::move(made));
+    const PressureReport p = released([&] { return measure_pressure(log, o); });
     py::dict d;
     d["disks"] = p.disks, d["boundary"] = to_string(p.boundary), d["area"] = p.area;
     d["virial_area"] = p.virial_area, d["packing_fraction"] = p.packing_fraction;
@@ -169,11 +149,7 @@ void bind_analysis(py::module_& m) {
     if (!at.is_none()) r.at = time_argument(at, log.info().scalar, "crater(at)");
     r.energy_fraction = energy_fraction;
     r.bed_species = bed;
-    Result<CraterMeasurement> made = [&] {
-      py::gil_scoped_release release;
-      return measure_crater(log, r);
-    }();
-    const CraterMeasurement c = value_or_raise(std::move(made));
+    const CraterMeasurement c = released([&] { return measure_crater(log, r); });
     py::dict d;
     const auto& names = crater_metric_names();
     const std::vector<double> values = crater_metric_values(c);

@@ -48,11 +48,7 @@ py::dict counts_dict(const EventCounts& c) {
 }
 
 Log open_log(const std::string& path) {
-  Result<Log> log = [&] {
-    py::gil_scoped_release release;
-    return Log::open(path);
-  }();
-  return value_or_raise(std::move(log));
+  return released([&] { return Log::open(path); });
 }
 
 }  // namespace
@@ -66,36 +62,20 @@ void bind_log(py::module_& m) {
       .def("state_at",
            [](const Log& log, py::handle t) {
              const Time at = time_argument(t, log.info().scalar, "state(t)");
-             Result<State> s = [&] {
-               py::gil_scoped_release release;
-               return log.state_at(at);
-             }();
-             return state_dict(value_or_raise(std::move(s)));
+             return state_dict(released([&] { return log.state_at(at); }));
            })
       .def("state_at_event",
            [](const Log& log, std::uint64_t n) {
-             Result<State> s = [&] {
-               py::gil_scoped_release release;
-               return log.state_at_event(n);
-             }();
-             return state_dict(value_or_raise(std::move(s)));
+             return state_dict(released([&] { return log.state_at_event(n); }));
            })
       .def("state_at_end",
            [](const Log& log) {
-             Result<State> s = [&] {
-               py::gil_scoped_release release;
-               return log.state_at_end();
-             }();
-             return state_dict(value_or_raise(std::move(s)));
+             return state_dict(released([&] { return log.state_at_end(); }));
            })
       .def("count_events", [](const Log& log) { return counts_dict(value_or_raise(log.count_events())); })
       .def("verify",
            [](const Log& log) {
-             Result<VerifyReport> r = [&] {
-               py::gil_scoped_release release;
-               return log.verify();
-             }();
-             const VerifyReport& v = value_or_raise(std::move(r));
+             const VerifyReport& v = released([&] { return log.verify(); });
              py::dict d;
              d["identical"] = v.identical, d["partial"] = v.partial, d["events_compared"] = v.events_compared;
              d["keyframes_checked"] = v.keyframes_checked, d["difference"] = v.difference, d["text"] = v.text;
@@ -103,11 +83,7 @@ void bind_log(py::module_& m) {
            })
       .def("diff",
            [](const Log& log, const Log& other, bool full) {
-             Result<DiffReport> r = [&] {
-               py::gil_scoped_release release;
-               return log.diff(other, full);
-             }();
-             const DiffReport& v = value_or_raise(std::move(r));
+             const DiffReport& v = released([&] { return log.diff(other, full); });
              py::dict d;
              d["identical"] = v.identical;
              d["first_difference"] = v.first_difference ? py::object(py::int_(*v.first_difference)) : py::none();
@@ -117,11 +93,7 @@ void bind_log(py::module_& m) {
            py::arg("other"), py::arg("full") = false)
       .def("content_digest",
            [](const Log& log) {
-             Result<std::string> r = [&] {
-               py::gil_scoped_release release;
-               return log.content_digest();
-             }();
-             return value_or_raise(std::move(r));
+             return released([&] { return log.content_digest(); });
            })
       // For the benchmark: the library's own time for state_at(t) on a fresh Log, without any Python
       // conversion (seconds, median of `repeats` fresh opens), the baseline the module is measured against.

@@ -36,11 +36,7 @@ class PySimulation {
   }
 
   explicit PySimulation(const std::string& resume_path) : hook_(std::make_shared<ProgressHook>()) {
-    Result<Simulation> made = [&] {
-      py::gil_scoped_release release;
-      return Simulation::resume(resume_path, options());
-    }();
-    adopt(value_or_raise(std::move(made)));
+    adopt(released([&] { return Simulation::resume(resume_path, options()); }));
   }
 
   std::string run(py::object max_events, py::object callback) {
@@ -124,11 +120,7 @@ class PySimulation {
   void start(const Scene& scene, const std::string& log_path) {
     SimulationOptions o = options();
     o.log_path = log_path;
-    Result<Simulation> made = [&] {
-      py::gil_scoped_release release;
-      return Simulation::create(scene, o);
-    }();
-    adopt(value_or_raise(std::move(made)));
+    adopt(released([&] { return Simulation::create(scene, o); }));
   }
 
   void adopt(Simulation&& sim) {

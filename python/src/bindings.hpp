@@ -40,6 +40,16 @@ template <class T>
 T value_or_raise(Result<T>&& result) {
   return std::move(result).value();  // ede::Exception is translated (errors.cpp)
 }
+// f() with the GIL released (the library call may take long; other Python threads run meanwhile), its
+// result's value or the library's error raised.
+template <class F>
+auto released(F&& f) {
+  auto result = [&] {
+    py::gil_scoped_release release;
+    return f();
+  }();
+  return value_or_raise(std::move(result));
+}
 
 template <class T>
 py::array_t<T> take_vector(std::vector<T>&& values) {
