@@ -2,8 +2,8 @@
 //
 // Every event that changes the state (pair, wall, wrap, action) goes into chunks of columns; the full state
 // goes into keyframes every keyframe_interval logged events and at every engine rebuild (those are
-// resumable); an index and a fixed trailer close the file at the end. Compression and writing run on a
-// second thread in submission order, so logging costs the simulation little and the bytes never depend on
+// resumable); an index and a fixed trailer close the file at the end. Coding the columns, compression
+// and writing run on a second thread in submission order (the event loop only copies each event), so logging costs the simulation little and the bytes never depend on
 // timing. The writer never changes the run: a run with and without a log produces the same events.
 #pragma once
 

@@ -76,14 +76,22 @@ RecordWriter::~RecordWriter() { finish(); }
 void RecordWriter::write_raw(std::vector<unsigned char> bytes) {
   std::unique_lock lock(mutex_);
   idle_.wait(lock, [&] { return queue_.size() < kMaxQueued; });
-  queue_.push_back(Job{true, {}, std::move(bytes)});
+  queue_.push_back(Job{true, {}, std::move(bytes), {}});
   wake_.notify_one();
 }
 
 std::size_t RecordWriter::submit(logfmt::RecordHeader header, std::vector<unsigned char> content) {
   std::unique_lock lock(mutex_);
   idle_.wait(lock, [&] { return queue_.size() < kMaxQueued; });
-  queue_.push_back(Job{false, header, std::move(content)});
+  queue_.push_back(Job{false, header, std::move(content), {}});
+  wake_.notify_one();
+  return submitted_++;
+}
+
+std::size_t RecordWriter::submit_built(logfmt::RecordHeader header, Builder build) {
+  std::unique_lock lock(mutex_);
+  idle_.wait(lock, [&] { return queue_.size() < kMaxQueued; });
+  queue_.push_back(Job{false, header, {}, std::move(build)});
   wake_.notify_one();
   return submitted_++;
 }
@@ -165,6 +173,10 @@ std::string RecordWriter::write_job(Job& job) {
     const std::string e = write_all(fd_, job.bytes.data(), job.bytes.size());
     offset_ += job.bytes.size();
     return e.empty() ? e : "writing '" + path_ + "': " + e;
+  }
+  if (job.build) {
+    job.bytes = job.build();
+    job.build = nullptr;  // frees the chunk's events now
   }
   auto* cctx = static_cast<ZSTD_CCtx*>(zstd_context_);
   std::vector<unsigned char> out(logfmt::kRecordHeaderSize + ZSTD_compressBound(job.bytes.size()));

@@ -1,6 +1,7 @@
 // RecordWriter: compresses records with zstd and appends them to a log file, on a second thread.
 //
-// The event loop hands over a finished message (a chunk, a keyframe) and goes on simulating; one worker
+// The event loop hands over a finished message (a keyframe), or a function that builds one (a chunk,
+// whose columns are coded on the worker: log_writer.cpp), and goes on simulating; one worker builds,
 // compresses and writes records strictly in the order they were submitted, with fixed zstd parameters
 // (single-threaded frames, checksum and content size on), so the bytes never depend on timing. Each
 // record is written with one write(2) of header + payload: a run killed at any moment leaves whole
@@ -19,6 +20,7 @@
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -42,6 +44,10 @@ class RecordWriter {
   // Queues a record; `header.payload_size` is filled in by the worker. Returns the record's sequence
   // number (0, 1, ... in submission order); its file offset is known once flush() returned.
   std::size_t submit(logfmt::RecordHeader header, std::vector<unsigned char> content);
+  // Queues a record whose content `build` makes on the worker, after every record submitted before it
+  // was built (so a builder may keep state from one call to the next: it runs in submission order).
+  using Builder = std::function<std::vector<unsigned char>()>;
+  std::size_t submit_built(logfmt::RecordHeader header, Builder build);
   // Waits until everything submitted is on disk.
   void flush();
   // File offset of the record with this sequence number (after flush()).
@@ -56,6 +62,7 @@ class RecordWriter {
     bool raw;
     logfmt::RecordHeader header;
     std::vector<unsigned char> bytes;
+    Builder build;  // when set, makes `bytes` on the worker
   };
   void work();
   std::string write_job(Job& job);
