@@ -155,6 +155,43 @@ TEST_CASE("Log::event_columns hold exactly what the events hold", "[replay][log]
   }
 }
 
+// Every column of a and b, bit for bit (exact() widens each scalar exactly).
+static void require_same_columns(const ede::EventColumns& a, const ede::EventColumns& b) {
+  REQUIRE(a.size() == b.size());
+  REQUIRE(a.index == b.index);
+  REQUIRE(a.kind == b.kind);
+  REQUIRE((a.i == b.i && a.j == b.j));
+  const auto same = [](const ede::Column& x, const ede::Column& y) {
+    if (x.size() != y.size()) return false;
+    for (std::size_t k = 0; k < x.size(); ++k)
+      if (x.exact(k) != y.exact(k)) return false;
+    return true;
+  };
+  CHECK(same(a.time, b.time));
+  CHECK((same(a.vix, b.vix) && same(a.viy, b.viy) && same(a.vjx, b.vjx) && same(a.vjy, b.vjy)));
+  CHECK((same(a.xi, b.xi) && same(a.yi, b.yi) && same(a.xj, b.xj) && same(a.yj, b.yj)));
+  CHECK((same(a.vix_before, b.vix_before) && same(a.vjy_before, b.vjy_before)));
+}
+
+TEST_CASE("Log::event_columns gives the same bits on any number of threads", "[replay][log][events][threads]") {
+  // Keyframes every 100 events: a range is cut into pieces, each replayed from its own keyframe.
+  const ede::Log log = logged("log-columns-threads.ede", {{"log.keyframe_interval=100"}});
+  REQUIRE(log.info().keyframes > 5);
+  const std::vector<ede::EventRange> ranges = {
+      {}, {.from_time = 0.1, .to_time = 0.5}, {.from_event = 250, .to_event = 1201}, {.to_time = 0.2},
+      {.from_time = 0.7}, {.from_event = 3, .to_event = 4}};
+  for (const ede::EventRange& range : ranges) {
+    const ede::EventColumns one = log.event_columns(range, true, true, 0, 1).value();
+    const auto events = log.events(range).value();
+    REQUIRE(one.size() == events.size());
+    REQUIRE(one.size() > 0);
+    for (const unsigned threads : {2u, 3u, 8u}) {
+      INFO("threads " << threads << ", events " << one.size());
+      require_same_columns(one, log.event_columns(range, true, true, 0, threads).value());
+    }
+  }
+}
+
 TEST_CASE("Log::open refuses what is not a log, naming the file", "[replay][log][errors]") {
   auto missing = ede::Log::open(temp_path("missing.ede"));
   REQUIRE_FALSE(missing);

@@ -43,6 +43,30 @@ class ByteReader {
   ByteReader(const unsigned char* data, std::size_t size) : p_(data), end_(data + size) {}
   // False (and the reader marked failed) if the input ends or the value exceeds `max_bits`.
   bool varint(u128& out, int max_bits = 128) {
+    // One byte (most ids, residuals and time codes): no 128-bit shifting. Every caller allows >= 7 bits.
+    if (p_ != end_ && *p_ < 0x80 && max_bits >= 7) {
+      out = *p_++;
+      return true;
+    }
+    // Up to 9 bytes (63 bits) in 64-bit arithmetic, with the same checks as the general loop below.
+    {
+      const unsigned char* p = p_;
+      std::uint64_t v = 0;
+      const int limit = max_bits + 7 < 63 ? max_bits + 7 : 63;
+      for (int shift = 0; shift < limit; shift += 7) {
+        if (p == end_) return fail();
+        const unsigned char b = *p++;
+        if (shift >= max_bits && (b & 0x7F)) return fail();
+        v |= std::uint64_t(b & 0x7F) << shift;
+        if (!(b & 0x80)) {
+          if (max_bits < 64 && (v >> max_bits) != 0) return fail();
+          p_ = p;
+          out = v;
+          return true;
+        }
+      }
+      if (limit == max_bits + 7) return fail();
+    }
     u128 v = 0;
     for (int shift = 0; shift < max_bits + 7; shift += 7) {
       if (p_ == end_) return fail();
@@ -56,6 +80,13 @@ class ByteReader {
       }
     }
     return fail();
+  }
+  // Consumes a varint 0 (one zero byte) if that is what comes next: the common residual, read without
+  // 128-bit arithmetic.
+  bool zero() {
+    if (p_ == end_ || *p_ != 0) return false;
+    ++p_;
+    return true;
   }
   bool byte(unsigned char& out) {
     if (p_ == end_) return fail();

@@ -60,6 +60,11 @@ bool ChunkDecoder<T>::read_scalar(T& out) {
 
 template <class T>
 bool ChunkDecoder<T>::read_residual(T predicted, T& out) {
+  if (residuals_.zero()) {  // the prediction was exact: apply_residual(0, predicted) is predicted itself
+    out = predicted;
+    if (!std::isfinite(double(out))) return fail("a decoded velocity is not finite");
+    return true;
+  }
   u128 r;
   if (!residuals_.varint(r)) return fail("the residual column is cut short");
   out = apply_residual(r, predicted);

@@ -4,8 +4,11 @@
 // in T (state_of), events as Event with every value widened exactly to Time.
 #include "ede/log.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <thread>
 
 #include "core/scalar_dispatch.hpp"
 #include "core/state_of.hpp"
@@ -114,6 +117,42 @@ Result<State> Log::state_at_end() const {
 
 namespace {
 
+// Where a range of events starts and ends, as event indices: [first, end), and the time bound t1 (every
+// event after it is left out). A from_time seeks the cached replay `r`, which then stands at `first`.
+template <class T>
+struct EventSpan {
+  std::uint64_t first = 0, end = 0;
+  T t1 = std::numeric_limits<T>::infinity();
+};
+
+template <class T>
+Result<EventSpan<T>> span_of(const Log::Impl& impl, Replay<T>& r, const EventRange& range) {
+  const std::uint64_t total = impl.info.events;
+  EventSpan<T> span;
+  span.first = range.from_event.value_or(0);
+  span.end = std::min(total, range.to_event.value_or(total));
+  if (span.first > total)
+    return Error{impl.info.path + ": event " + std::to_string(span.first) + " is beyond the log's " +
+                 std::to_string(total) + " events"};
+  if (range.to_time) span.t1 = T(*range.to_time);
+  if (range.from_time) {
+    const T t0 = T(*range.from_time);
+    if (t0 > r.final_time()) span.first = span.end;
+    else {
+      auto at = seek_before(r, t0);
+      if (!at) return at.error();
+      span.first = std::max(span.first, at.value());
+    }
+  }
+  // No chunk that starts after t1 holds an event of the range (times never decrease).
+  for (const LogRecordRef& c : impl.reader->chunks())
+    if (c.time_first > double(span.t1) && c.first_event < span.end) {
+      span.end = std::max(span.first, c.first_event);
+      break;
+    }
+  return span;
+}
+
 // The events of `range` in order, as the log's own ReplayedEvent<T>: the one walk behind for_each_event and
 // event_columns.
 template <class T>
@@ -122,27 +161,58 @@ Status walk_events(const Log::Impl& impl, const EventRange& range,
   auto replay = impl.replay_in<T>();
   if (!replay) return replay.error();
   Replay<T>& r = *replay.value();
-  const std::uint64_t total = impl.info.events;
-  std::uint64_t first = range.from_event.value_or(0), end = std::min(total, range.to_event.value_or(total));
-  if (first > total)
-    return Error{impl.info.path + ": event " + std::to_string(first) + " is beyond the log's " +
-                 std::to_string(total) + " events"};
-  const T t1 = range.to_time ? T(*range.to_time) : std::numeric_limits<T>::infinity();
-  if (range.from_time) {
-    const T t0 = T(*range.from_time);
-    if (t0 > r.final_time()) return Ok{};
-    auto at = seek_before(r, t0);
-    if (!at) return at.error();
-    first = std::max(first, at.value());
-  }
-  if (first >= end) return Ok{};
-  return r.for_each_event(first, end, [&](const ReplayedEvent<T>& e) { return e.time <= t1 && f(e); });
+  auto span = span_of(impl, r, range);
+  if (!span) return span.error();
+  const EventSpan<T> sp = span.value();
+  if (sp.first >= sp.end) return Ok{};
+  return r.for_each_event(sp.first, sp.end, [&](const ReplayedEvent<T>& e) { return e.time <= sp.t1 && f(e); });
 }
 
+// The columns of an event_columns walk, sized for the whole span up front so that each piece writes its
+// own slice (no appending, no copying pieces together) and the result is moved out as it is.
 template <class T>
 struct ColumnsOf {
+  std::vector<std::uint64_t> index;
+  std::vector<std::uint8_t> kind;
+  std::vector<std::int32_t> i, j;
   std::vector<T> time, after[4], at[4], pre[4];
+  bool positions = false, before = false;
+
+  template <class F>
+  void each(F f) {
+    f(index), f(kind), f(i), f(j), f(time);
+    for (int k = 0; k < 4; ++k) {
+      f(after[k]);
+      if (positions) f(at[k]);
+      if (before) f(pre[k]);
+    }
+  }
+  void resize(std::size_t n) {
+    each([n](auto& v) { v.resize(n); });
+  }
+  void put(std::size_t r, const ReplayedEvent<T>& e) {
+    index[r] = e.index, kind[r] = static_cast<std::uint8_t>(e.kind), i[r] = e.i, j[r] = e.j, time[r] = e.time;
+    after[0][r] = e.vix, after[1][r] = e.viy, after[2][r] = e.vjx, after[3][r] = e.vjy;
+    if (positions) at[0][r] = e.xi, at[1][r] = e.yi, at[2][r] = e.xj, at[3][r] = e.yj;
+    if (before) pre[0][r] = e.vix0, pre[1][r] = e.viy0, pre[2][r] = e.vjx0, pre[3][r] = e.vjy0;
+  }
 };
+
+// [first, end) cut at keyframes into at most `pieces` runs of about equal length: each piece after the
+// first starts exactly at a keyframe, so its replay starts there with nothing to skip.
+std::vector<std::uint64_t> piece_bounds(const LogReader& reader, std::uint64_t first, std::uint64_t end,
+                                        unsigned pieces) {
+  std::vector<std::uint64_t> bounds{first};
+  const std::uint64_t target = (end - first) / std::max(pieces, 1u);
+  for (const LogRecordRef& k : reader.keyframes()) {
+    if (bounds.size() >= pieces) break;
+    if (k.first_event > first && k.first_event < end && k.first_event - bounds.back() >= target / 2 &&
+        k.first_event - first >= target * bounds.size() - target / 2)
+      bounds.push_back(k.first_event);
+  }
+  bounds.push_back(end);
+  return bounds;
+}
 
 }  // namespace
 
@@ -153,29 +223,57 @@ Status Log::for_each_event(const EventRange& range, const std::function<bool(con
 }
 
 Result<EventColumns> Log::event_columns(const EventRange& range, bool positions, bool before,
-                                        std::size_t expected) const {
+                                        std::size_t expected, unsigned threads) const {
   return with_scalar(impl_->info.scalar, [&]<class T>() -> Result<EventColumns> {
-    EventColumns out;
+    auto replay = impl_->replay_in<T>();
+    if (!replay) return replay.error();
+    auto span = span_of(*impl_, *replay.value(), range);
+    if (!span) return span.error();
+    const EventSpan<T> sp = span.value();
     ColumnsOf<T> c;
-    out.index.reserve(expected), out.kind.reserve(expected), out.i.reserve(expected), out.j.reserve(expected);
-    c.time.reserve(expected);
-    for (int k = 0; k < 4; ++k) {
-      c.after[k].reserve(expected);
-      if (positions) c.at[k].reserve(expected);
-      if (before) c.pre[k].reserve(expected);
-    }
-    Status s = walk_events<T>(*impl_, range, [&](const ReplayedEvent<T>& e) {
-      out.index.push_back(e.index), out.kind.push_back(static_cast<std::uint8_t>(e.kind));
-      out.i.push_back(e.i), out.j.push_back(e.j);
-      c.time.push_back(e.time);
-      c.after[0].push_back(e.vix), c.after[1].push_back(e.viy), c.after[2].push_back(e.vjx), c.after[3].push_back(e.vjy);
-      if (positions) c.at[0].push_back(e.xi), c.at[1].push_back(e.yi), c.at[2].push_back(e.xj), c.at[3].push_back(e.yj);
-      if (before) {
-        c.pre[0].push_back(e.vix0), c.pre[1].push_back(e.viy0), c.pre[2].push_back(e.vjx0), c.pre[3].push_back(e.vjy0);
+    c.positions = positions, c.before = before;
+    (void)expected;  // the span's length is known: the columns are sized to it
+    if (sp.first < sp.end) {
+      if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+      const std::vector<std::uint64_t> bounds = piece_bounds(*impl_->reader, sp.first, sp.end, threads);
+      const std::size_t n = bounds.size() - 1;
+      c.resize(sp.end - sp.first);
+      std::vector<std::uint64_t> written(n, 0);
+      std::vector<Status> status(n, Ok{});
+      // Piece 0 continues the cached replay (a from_time seek left it at `first`); the others replay from
+      // their own keyframe on a fresh Replay over the same reader (LogReader is read-only after open).
+      const auto run_piece = [&](std::size_t k) {
+        Replay<T>* r = replay.value();
+        std::unique_ptr<Replay<T>> own;
+        if (k > 0) {
+          auto made = Replay<T>::create(impl_->reader);
+          if (!made) return void(status[k] = made.error());
+          own = std::move(made).value();
+          r = own.get();
+        }
+        const std::size_t offset = bounds[k] - sp.first;
+        status[k] = r->for_each_event(bounds[k], bounds[k + 1], [&](const ReplayedEvent<T>& e) {
+          if (!(e.time <= sp.t1)) return false;
+          c.put(offset + written[k]++, e);
+          return true;
+        });
+      };
+      std::vector<std::thread> workers;
+      for (std::size_t k = 1; k < n; ++k) workers.emplace_back(run_piece, k);
+      run_piece(0);
+      for (std::thread& w : workers) w.join();
+      // The events kept are a prefix: a piece cut short by t1 is followed by pieces that stopped at their
+      // first event (times never decrease).
+      std::uint64_t kept = 0;
+      for (std::size_t k = 0; k < n; ++k) {
+        if (!status[k]) return status[k].error();
+        kept += written[k];
+        if (written[k] < bounds[k + 1] - bounds[k]) break;
       }
-      return true;
-    });
-    if (!s) return s.error();
+      c.resize(kept);
+    }
+    EventColumns out;
+    out.index = std::move(c.index), out.kind = std::move(c.kind), out.i = std::move(c.i), out.j = std::move(c.j);
     out.time = Column(std::move(c.time));
     out.vix = Column(std::move(c.after[0])), out.viy = Column(std::move(c.after[1]));
     out.vjx = Column(std::move(c.after[2])), out.vjy = Column(std::move(c.after[3]));
