@@ -476,6 +476,12 @@ TEST_CASE("setup refuses invalid scenes with messages naming the species and the
   CHECK(contains(build_error(scene_of({bad})), "the mass -1 must be finite and > 0"));
 
   bad = s;
+  bad.mass.value = 1e308;  // finite, but two of them sum past the largest double
+  CHECK(contains(build_error(scene_of({bad})), "whose sum overflows a double"));
+  bad.mass.value = 8e307;  // the sum 1.6e308 is finite: accepted
+  CHECK(build_initial_state(scene_of({bad})).ok());
+
+  bad = s;
   bad.radius = {0.3, 0.3, false};
   bad.placement.region = {0, 0, 0.5, 1};
   CHECK(contains(build_error(scene_of({bad})), "a disk of radius 0.3 does not fit in the region"));

@@ -21,6 +21,7 @@
 #include "log/log_framing.hpp"
 #include "log/record_writer.hpp"
 #include "log/scalar_bytes.hpp"
+#include "scene/scene_label.hpp"
 
 namespace ede {
 
@@ -81,7 +82,7 @@ LogSettings LogSettings::from(const LogSpec& spec) {
 
 LogRunInfo LogRunInfo::from(const Scene& scene, const EngineOptions& options, const std::vector<std::string>& species) {
   LogRunInfo r;
-  r.scene_name = scene.source_name;
+  r.scene_name = scene_label(scene.source_name);  // not the directory: same scene, same bytes
   r.scene_text = scene.source_text;
   r.seed = scene.seed;
   r.scalar = scene.scalar;

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "scene/scene_keys.hpp"
+#include "scene/scene_label.hpp"
 #include "scene/scene_override.hpp"
 
 namespace ede {
@@ -503,7 +504,7 @@ Scene scene_from_tree(const toml::table& root, const Origin& origin) {
 // The tree as TOML, headed by comments saying where it came from; it reads back to the same Scene.
 std::string effective_text(const toml::table& root, const Origin& origin) {
   std::ostringstream out;
-  out << "# effective scene: " << user_quoted(origin.source_name) << "\n";
+  out << "# effective scene: " << user_quoted(scene_label(origin.source_name)) << "\n";
   for (const AppliedOverride& o : origin.overrides) {
     out << "# --set #" << o.number << " " << user_quoted(o.text) << "\n";
   }

@@ -130,12 +130,31 @@ Error overlap_error(const InitialState& s, const Overlap& o, const std::string& 
 
 }  // namespace
 
+// The collision rule divides by m_i + m_j: if the two heaviest masses sum past the largest double, every
+// collision of those two computes no impulse and they pass through each other, finitely, so nothing
+// downstream notices. Only ratios of masses matter to the dynamics, so rescaling is always possible.
+static Status check_mass_sum(const InitialState& s, const std::string& source) {
+  std::size_t a = 0, b = s.size() > 1 ? 1 : 0;
+  if (s.mass[b] > s.mass[a]) std::swap(a, b);
+  for (std::size_t i = 2; i < s.size(); ++i) {
+    if (s.mass[i] > s.mass[a]) b = a, a = i;
+    else if (s.mass[i] > s.mass[b]) b = i;
+  }
+  if (std::isfinite(s.mass[a] + s.mass[b])) return Ok{};
+  return Error{source + ": " + disk_name(s, a) + " and " + disk_name(s, b) + " have masses " +
+               number_text(s.mass[a]) + " and " + number_text(s.mass[b]) +
+               " whose sum overflows a double: the collision rule divides by it, so they would pass through "
+               "each other. Fix: scale all masses down (only their ratios matter to the motion)."};
+}
+
 Status check_initial_state(const InitialState& state, BoundaryKind boundary, const std::string& source_name) {
   if (Status st = check_shape(state, source_name); !st) return st;
   const bool periodic = boundary == BoundaryKind::Periodic;
   for (std::size_t i = 0; i < state.size(); ++i) {
     if (Status st = check_disk(state, i, periodic, source_name); !st) return st;
   }
+  if (state.size() > 1)
+    if (Status st = check_mass_sum(state, source_name); !st) return st;
   const Overlap o = find_overlaps(state, periodic);
   if (o.pairs > 0) return overlap_error(state, o, source_name);
   return Ok{};
