@@ -54,7 +54,7 @@ std::uint64_t splitmix(std::uint64_t& s) {
 
 }  // namespace
 
-TEST_CASE("g(r) of a square lattice: 4 neighbours at a, 4 at a sqrt(2), 4 at 2a, none between", "[analysis][structure]") {
+TEST_CASE("g(r) of a square lattice: pairs at a, a sqrt(2), 2a and a sqrt(5) only, in exact numbers", "[analysis][structure]") {
   const int m = 10;
   const double a = 0.1;
   PairCorrelationOptions o;
