@@ -146,10 +146,4 @@ Result<VelocityAutocorrelation> velocity_autocorrelation(const Log& log, const T
   return out;
 }
 
-double enskog_diffusion(double n, double sigma, double g_contact, double kT, double mass) {
-  return 1 / (2 * n * sigma * g_contact) * std::sqrt(kT / (M_PI * mass));
-}
-
-double henderson_contact(double phi) { return (1 - 7 * phi / 16) / ((1 - phi) * (1 - phi)); }
-
 }  // namespace ede
