@@ -20,6 +20,7 @@ void bind_log(py::module_& m);
 void bind_events(py::module_& m);
 void bind_run(py::module_& m);
 void bind_analysis(py::module_& m);
+void bind_structure(py::module_& m);
 
 // The numpy dtype of a scalar kind: float32, float64 or longdouble.
 py::dtype dtype_of(ScalarKind scalar);

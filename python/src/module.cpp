@@ -8,4 +8,5 @@ PYBIND11_MODULE(_ede, m) {
   ede::python::bind_events(m);
   ede::python::bind_run(m);
   ede::python::bind_analysis(m);
+  ede::python::bind_structure(m);
 }

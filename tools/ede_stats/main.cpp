@@ -21,6 +21,9 @@ static int run_main(int argc, char** argv) {
       {"hist", add_hist_command(app)},         {"species", add_species_command(app)},
       {"energy", add_energy_command(app)},     {"collisions", add_collisions_command(app)},
       {"pressure", add_pressure_command(app)},
+      {"gr", add_gr_command(app)},             {"sk", add_sk_command(app)},
+      {"psi6", add_psi6_command(app)},         {"msd", add_msd_command(app)},
+      {"vacf", add_vacf_command(app)},
   };
   ede::tools::add_version_flags(app, "ede-stats");
   if (const auto stop = ede::tools::parse_command_line(app, argc, argv)) return *stop;

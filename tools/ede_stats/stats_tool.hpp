@@ -16,5 +16,10 @@ Command add_species_command(CLI::App& app);     // per-species mean speed, energ
 Command add_energy_command(CLI::App& app);      // kinetic energy on a fine time grid
 Command add_collisions_command(CLI::App& app);  // collisions per disk, rate, mean free time, speed classes
 Command add_pressure_command(CLI::App& app);    // pressure from the walls and from the virial
+Command add_gr_command(CLI::App& app);          // pair correlation g(r), contact value g(sigma)
+Command add_sk_command(CLI::App& app);          // static structure factor S(k)
+Command add_psi6_command(CLI::App& app);        // bond-orientational order psi6, g6(r)
+Command add_msd_command(CLI::App& app);         // mean-square displacement, D against Enskog
+Command add_vacf_command(CLI::App& app);        // velocity autocorrelation, exact
 
 }  // namespace ede::stats_tool

@@ -24,4 +24,6 @@
 #include "ede/scene.hpp"
 #include "ede/simulation.hpp"
 #include "ede/state.hpp"
+#include "ede/structure.hpp"
+#include "ede/transport.hpp"
 #include "ede/version.hpp"

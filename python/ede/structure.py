@@ -1,0 +1,62 @@
+"""Structure and transport of a log, as ede-stats gr, sk, psi6, msd and vacf compute them (the same
+library functions; docs/analysis.md has every formula): g(r) per species pair, g(sigma) three ways, S(k),
+psi6 and g6(r), the exactly unwrapped MSD with D, and the exact VACF."""
+from . import _ede
+from .analysis import _log, _report
+
+__all__ = ["pair_correlation", "contact_values", "structure_factor", "bond_order", "msd", "vacf",
+           "enskog_diffusion", "henderson_contact"]
+
+
+def _species(log, name):
+    if name is None:
+        return -1
+    names = [n for n, _ in log.species]
+    if name not in names:
+        raise ValueError("no species %r (the log has: %s)" % (name, ", ".join(names)))
+    return names.index(name)
+
+
+def pair_correlation(log, r_max, *, bins=200, r_min=0.0, species=None, with_species=None, t0=None, t1=None, frames=1):
+    """g(r) at t0 (default: the end), or summed over `frames` times from t0 to t1 (default: the end)."""
+    a = _species(log, species)
+    b = _species(log, with_species if with_species is not None else species)
+    return _report(_ede.pair_correlation(_log(log), float(r_max), int(bins), float(r_min), a, b, t0, t1, int(frames)))
+
+
+def contact_values(log, t0, t1=None, *, frames=20):
+    """g(sigma) from a fit of g(r), from the collision rate (Enskog) and from the virial pressure."""
+    return _report(_ede.contact_values(_log(log), t0, t1, int(frames)))
+
+
+def structure_factor(log, k_max, *, shells=100, species=None, t0=None, t1=None, frames=1):
+    """S(k) on the box's wave vectors (kx, ky, s) and averaged over shells of |k| (k_lo, k_hi, s_shell)."""
+    return _report(_ede.structure_factor(_log(log), float(k_max), int(shells), _species(log, species), t0, t1,
+                                         int(frames)))
+
+
+def bond_order(log, r_max, *, bins=200, t0=None, t1=None, frames=1):
+    """psi6 per disk (complex, nearest six neighbours), global |<psi6>|, mean |psi6|, g(r) and g6(r)."""
+    return _report(_ede.bond_order(_log(log), float(r_max), int(bins), t0, t1, int(frames)))
+
+
+def msd(log, max_lag, *, lag_step=None, t0=None, t1=None, origins=20, species=None, groups=10):
+    """Mean-square displacement (exactly unwrapped) and D = slope / 4 with its error."""
+    step = float(lag_step) if lag_step is not None else float(max_lag) / 100
+    return _report(_ede.msd(_log(log), t0, t1, step, float(max_lag), int(origins), _species(log, species), int(groups)))
+
+
+def vacf(log, max_lag, *, lag_step=None, t0=None, t1=None, species=None, groups=10):
+    """Velocity autocorrelation, exact from the events, and its Green-Kubo integral."""
+    step = float(lag_step) if lag_step is not None else float(max_lag) / 100
+    return _report(_ede.vacf(_log(log), t0, t1, step, float(max_lag), _species(log, species), int(groups)))
+
+
+def enskog_diffusion(n, sigma, g_contact, kT, mass):
+    """D_E = (1 / (2 n sigma g(sigma))) sqrt(kT / (pi m)) (2D, Gass 1971)."""
+    return _ede.enskog_diffusion(n, sigma, g_contact, kT, mass)
+
+
+def henderson_contact(phi):
+    """Henderson's g(sigma) = (1 - 7 phi / 16) / (1 - phi)^2."""
+    return _ede.henderson_contact(phi)

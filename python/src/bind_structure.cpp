@@ -1,0 +1,111 @@
+// Structure and transport of a Log (ede/structure.hpp, ede/transport.hpp) for Python: the library
+// functions ede-stats gr, sk, psi6, msd and vacf call, each report converted field by field into a dict
+// of numpy arrays; nothing is computed here. Rejected: adding them to bind_analysis.cpp, which another
+// part of the module grows too (one file per part of the API).
+#include <complex>
+
+#include "bindings.hpp"
+
+namespace ede::python {
+
+namespace {
+
+template <class T>
+py::array_t<T> vec(const std::vector<T>& v) {
+  return py::array_t<T>({v.size()}, {sizeof(T)}, v.data());
+}
+
+FrameTimes frames_of(const py::object& from, const py::object& to, std::size_t frames) {
+  FrameTimes f;
+  if (!from.is_none()) f.from = from.cast<double>();
+  if (!to.is_none()) f.to = to.cast<double>();
+  f.frames = frames;
+  return f;
+}
+
+py::dict gr_dict(const PairCorrelation& p) {
+  py::dict d;
+  d["r_lo"] = vec(p.r_lo), d["r_hi"] = vec(p.r_hi), d["g"] = vec(p.g), d["count"] = vec(p.count);
+  d["ideal"] = vec(p.ideal), d["frames"] = p.frames, d["n_a"] = p.n_a, d["n_b"] = p.n_b, d["area"] = p.area;
+  if (!p.g6.empty()) d["g6"] = vec(p.g6);
+  return d;
+}
+
+TransportOptions transport_of(const py::object& from, const py::object& to, double lag_step, double max_lag,
+                              std::size_t origins, std::int32_t species, std::size_t groups) {
+  TransportOptions o;
+  if (!from.is_none()) o.from = from.cast<double>();
+  if (!to.is_none()) o.to = to.cast<double>();
+  o.lag_step = lag_step, o.max_lag = max_lag, o.origins = origins, o.species = species, o.groups = groups;
+  return o;
+}
+
+}  // namespace
+
+void bind_structure(py::module_& m) {
+  m.def("pair_correlation", [](const Log& log, double r_max, std::size_t bins, double r_min, std::int32_t a,
+                               std::int32_t b, py::object from, py::object to, std::size_t frames) {
+    PairCorrelationOptions o;
+    o.r_max = r_max, o.bins = bins, o.r_min = r_min, o.species_a = a, o.species_b = b;
+    const FrameTimes f = frames_of(from, to, frames);
+    return gr_dict(released([&] { return pair_correlation(log, o, f); }));
+  });
+  m.def("contact_values", [](const Log& log, py::object from, py::object to, std::size_t frames) {
+    const FrameTimes f = frames_of(from, to, frames);
+    const ContactValues c = released([&] { return contact_values(log, f); });
+    py::dict d;
+    const auto one = [](const ContactValue& v) {
+      py::dict e;
+      e["value"] = v.value, e["error"] = v.error, e["method"] = v.method;
+      return e;
+    };
+    d["fit"] = one(c.from_gr), d["collisions"] = one(c.from_collisions), d["pressure"] = one(c.from_pressure);
+    d["sigma"] = c.sigma, d["density"] = c.density, d["kT"] = c.kT, d["mass"] = c.mass;
+    return d;
+  });
+  m.def("structure_factor", [](const Log& log, double k_max, std::size_t shells, std::int32_t species,
+                               py::object from, py::object to, std::size_t frames) {
+    StructureFactorOptions o;
+    o.k_max = k_max, o.shells = shells, o.species = species;
+    const FrameTimes f = frames_of(from, to, frames);
+    const StructureFactor s = released([&] { return structure_factor(log, o, f); });
+    py::dict d;
+    d["kx"] = vec(s.kx), d["ky"] = vec(s.ky), d["s"] = vec(s.s);
+    d["k_lo"] = vec(s.k_lo), d["k_hi"] = vec(s.k_hi), d["s_shell"] = vec(s.s_shell);
+    d["frames"] = s.frames, d["n"] = s.n;
+    return d;
+  });
+  m.def("bond_order", [](const Log& log, double r_max, std::size_t bins, py::object from, py::object to,
+                         std::size_t frames) {
+    PairCorrelationOptions o;
+    o.r_max = r_max, o.bins = bins;
+    const FrameTimes f = frames_of(from, to, frames);
+    const BondOrder b = released([&] { return bond_order(log, o, f); });
+    py::dict d = gr_dict(b.g6);
+    std::vector<std::complex<double>> p(b.psi6);
+    d["psi6"] = vec(p), d["global"] = b.global, d["mean_local"] = b.mean_local;
+    return d;
+  });
+  m.def("msd", [](const Log& log, py::object from, py::object to, double lag_step, double max_lag,
+                  std::size_t origins, std::int32_t species, std::size_t groups) {
+    const TransportOptions o = transport_of(from, to, lag_step, max_lag, origins, species, groups);
+    const MeanSquareDisplacement r = released([&] { return mean_square_displacement(log, o); });
+    py::dict d;
+    d["lag"] = vec(r.lag), d["msd"] = vec(r.msd), d["error"] = vec(r.error);
+    d["disks"] = r.disks, d["origins"] = r.origins, d["diffusion"] = r.diffusion, d["diffusion_error"] = r.diffusion_error;
+    return d;
+  });
+  m.def("vacf", [](const Log& log, py::object from, py::object to, double lag_step, double max_lag,
+                   std::int32_t species, std::size_t groups) {
+    const TransportOptions o = transport_of(from, to, lag_step, max_lag, 0, species, groups);
+    const VelocityAutocorrelation r = released([&] { return velocity_autocorrelation(log, o); });
+    py::dict d;
+    d["lag"] = vec(r.lag), d["c"] = vec(r.c), d["error"] = vec(r.error), d["green_kubo"] = vec(r.green_kubo);
+    d["disks"] = r.disks;
+    return d;
+  });
+  m.def("enskog_diffusion", &enskog_diffusion);
+  m.def("henderson_contact", &henderson_contact);
+}
+
+}  // namespace ede::python
