@@ -311,6 +311,7 @@ async function refreshLogs() {
 view.openLog = async (name, t) => {
   document.querySelector('input[name=mode][value=log]').click();
   await refreshLogs();
+  if (![...$('log').options].some((o) => o.value === name)) $('log').add(new Option(name, name));
   $('log').value = name;
   await openLog();
   if (t !== undefined) setLogTime(Number(t), String(t));
