@@ -189,7 +189,12 @@ void work(LiveRuns::Run& r) {
       r.message = closed ? sim.message() : closed.error().message;
       continue;
     }
-    if (r.wanted.exchange(false) || seconds_since(last_publish) > 0.25) {
+    bool paused = false;
+    {
+      std::lock_guard lock(r.m);
+      paused = !r.running;
+    }
+    if (paused || r.wanted.exchange(false) || seconds_since(last_publish) > 0.25) {  // paused: its exact state
       publish(r, sim, rate);
       last_publish = Clock::now();
     }

@@ -8,6 +8,7 @@
 // from a signal handler (httplib's stop() is not async-signal-safe).
 #include <CLI/CLI.hpp>
 #include <csignal>
+#include <malloc.h>
 #include <cstdio>
 #include <filesystem>
 #include <thread>
@@ -69,6 +70,11 @@ int body(int argc, char** argv) {
   fs::create_directories(out_dir, ec);
   if (!add_root(opt.log_roots, out_dir, "--out-dir", error)) return fail(error);
   opt.out_dir = opt.log_roots.back().canonical;
+
+  // Frames are a few MB allocated and freed many times a second: keep that memory in the heap instead of
+  // mapping and unmapping it each time (every fresh page is a page fault; they cost more than the frame).
+  mallopt(M_MMAP_THRESHOLD, 256 << 20);
+  mallopt(M_TRIM_THRESHOLD, 512 << 20);
 
   // Block the signals in every thread (httplib's workers inherit the mask); one thread waits for them.
   sigset_t signals;

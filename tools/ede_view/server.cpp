@@ -51,6 +51,7 @@ void add_assets(httplib::Server& http) {
 Server::Server(const ServerOptions& options) : impl_(std::make_unique<Impl>(options)) {
   httplib::Server& http = impl_->http;
   http.set_payload_max_length(kMaxBody);
+  http.set_tcp_nodelay(true);  // frames are written in pieces: Nagle would hold the last one back
   http.set_default_headers({{"X-Content-Type-Options", "nosniff"}, {"X-Frame-Options", "DENY"}});
   const bool check_host = loopback(options.host);
   http.set_pre_routing_handler([check_host](const httplib::Request& req, httplib::Response& res) {

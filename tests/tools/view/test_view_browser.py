@@ -86,7 +86,7 @@ def main():
         for t in ["0.5", repr(end * 0.731), "0"]:
             browser.eval(f"edeView.openLog('0:gas.ede', '{t}')")
             browser.wait(f"edeView.last && edeView.last.t_request === '{t}'", 20)
-            drawn = browser.eval("edeView.last")
+            drawn = browser.eval("edeView.drawn()")
             rows = replay_at(log, t)
             same = len(rows) == drawn["n"] and all(
                 f32(row["x"]) == drawn["x"][i] and f32(row["y"]) == drawn["y"][i] for i, row in enumerate(rows))

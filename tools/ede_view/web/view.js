@@ -65,30 +65,65 @@ function colourGroups(f) {
   return { groups: g, palette: CLASSES };
 }
 
+// Colours as the canvas's pixels hold them (RGBA bytes read as one little-endian uint32).
+const pixelCache = new Map();
+function pixel(hex) {
+  if (!pixelCache.has(hex)) {
+    const v = parseInt(hex.slice(1), 16);
+    pixelCache.set(hex, (0xff000000 | ((v & 0xff) << 16) | (v & 0xff00) | ((v >> 16) & 0xff)) >>> 0);
+  }
+  return pixelCache.get(hex);
+}
+
+let image = null;
+
+// Disks of a few pixels or less are written straight into the image's pixels (each the pixels whose
+// centres lie inside it, at least one): ~10x faster than canvas arcs at 10^4-10^5 disks, and it is the
+// density view when disks are below a pixel. Larger disks are drawn as arcs, antialiased.
 function drawDisks(f) {
-  const c = $('disks'), ctx = c.getContext('2d');
+  const c = $('disks'), ctx = c.getContext('2d'), W = c.width, H = c.height;
   const { lx, ly } = f.info;
-  const scale = Math.min(c.width / lx, c.height / ly);
-  ctx.fillStyle = '#000';
-  ctx.fillRect(0, 0, c.width, c.height);
-  ctx.strokeStyle = '#666';
-  ctx.strokeRect(0.5, 0.5, lx * scale - 1, ly * scale - 1);
+  const scale = Math.min(W / lx, H / ly);
   const { groups, palette } = colourGroups(f);
-  for (let p = 0; p < palette.length; p++) {
-    ctx.fillStyle = palette[p];
-    ctx.beginPath();
+  let rmax = 0;
+  for (let i = 0; i < f.n; i++) rmax = Math.max(rmax, f.r[i]);
+  if (rmax * scale < 4) {
+    if (!image || image.width !== W || image.height !== H) image = ctx.createImageData(W, H);
+    const buf = new Uint32Array(image.data.buffer), colours = palette.map(pixel);
+    buf.fill(0xff000000);
     for (let i = 0; i < f.n; i++) {
-      if (groups[i] !== p) continue;
-      const px = f.x[i] * scale, py = (ly - f.y[i]) * scale, pr = f.r[i] * scale;
-      if (pr >= 1) {
+      const px = f.x[i] * scale, py = (ly - f.y[i]) * scale, pr = f.r[i] * scale, colour = colours[groups[i]];
+      const x0 = Math.max(0, Math.floor(px - pr)), x1 = Math.min(W - 1, Math.ceil(px + pr));
+      const y0 = Math.max(0, Math.floor(py - pr)), y1 = Math.min(H - 1, Math.ceil(py + pr));
+      let drawn = false;
+      for (let y = y0; y <= y1; y++) {
+        const dy = y + 0.5 - py;
+        for (let x = x0; x <= x1; x++) {
+          const dx = x + 0.5 - px;
+          if (dx * dx + dy * dy <= pr * pr) { buf[y * W + x] = colour; drawn = true; }
+        }
+      }
+      const cx = Math.floor(px), cy = Math.floor(py);
+      if (!drawn && cx >= 0 && cx < W && cy >= 0 && cy < H) buf[cy * W + cx] = colour;
+    }
+    ctx.putImageData(image, 0, 0);
+  } else {
+    ctx.fillStyle = '#000';
+    ctx.fillRect(0, 0, W, H);
+    for (let p = 0; p < palette.length; p++) {
+      ctx.fillStyle = palette[p];
+      ctx.beginPath();
+      for (let i = 0; i < f.n; i++) {
+        if (groups[i] !== p) continue;
+        const px = f.x[i] * scale, py = (ly - f.y[i]) * scale, pr = f.r[i] * scale;
         ctx.moveTo(px + pr, py);
         ctx.arc(px, py, pr, 0, 2 * Math.PI);
-      } else {
-        ctx.rect(px - 0.5, py - 0.5, 1, 1);  // below a pixel: one pixel per disk (a density)
       }
+      ctx.fill();
     }
-    ctx.fill();
   }
+  ctx.strokeStyle = '#666';
+  ctx.strokeRect(0.5, 0.5, lx * scale - 1, ly * scale - 1);
 }
 
 function drawHistogram(canvasId, h, curve, means) {
@@ -150,7 +185,7 @@ function show(f) {
   monitors(f);
   view.frames++;
   view.last = { time: f.info.time, t_request: f.info.t_request, events: f.info.events, n: f.n,
-    stride: f.info.stride, x: Array.from(f.x), y: Array.from(f.y), r: Array.from(f.r), info: f.info };
+    stride: f.info.stride, x: f.x, y: f.y, r: f.r, info: f.info };
 }
 
 async function fetchFrame(path) {
@@ -238,14 +273,25 @@ function startPlay(direction) {
 
 // --- the loop ----------------------------------------------------------------------------------------
 
+// One request in flight at a time; in a live run the next frame is fetched while this one is drawn.
+let pending = null;
+
+function liveFetch() {
+  return api('/api/run/frame').then((res) => res.arrayBuffer());
+}
+
 async function tick() {
   requestAnimationFrame(tick);
   if (busy) return;
   busy = true;
   try {
-    if (view.mode === 'live' && (liveRunning || liveDirty)) {
+    if (view.mode === 'live' && (liveRunning || liveDirty || pending)) {
       liveDirty = false;
-      await fetchFrame('/api/run/frame');
+      const prefetched = pending !== null;
+      const buffer = await (pending || liveFetch());
+      pending = liveRunning ? liveFetch() : null;
+      if (prefetched && !liveRunning) liveDirty = true;  // fetched before PAUSE: fetch the paused state too
+      show(parseFrame(buffer));
     } else if (view.mode === 'log' && logInfo) {
       if (play) {
         const t = playFrom + play * Number($('play-speed').value) * (performance.now() - playWall) / 1000;
@@ -261,6 +307,7 @@ async function tick() {
   } catch (e) {
     showError(e.message);
     play = 0;
+    pending = null;
     logShown = logWanted;
   }
   busy = false;
@@ -306,6 +353,9 @@ async function refreshLogs() {
     if (!logInfo || $('log').value !== logInfo.name) await openLog();
   } catch (e) { showError(e.message); }
 }
+
+// What was drawn last, as plain arrays (for the DevTools protocol, which passes typed arrays as objects).
+view.drawn = () => ({ ...view.last, x: Array.from(view.last.x), y: Array.from(view.last.y), r: Array.from(view.last.r) });
 
 // For tests and the console: open a log and show the state at the exact time text t.
 view.openLog = async (name, t) => {
