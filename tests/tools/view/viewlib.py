@@ -121,7 +121,7 @@ def chromium_or_skip():
 class Browser:
     """One headless chromium page, driven over the DevTools protocol."""
 
-    def __init__(self, width=1400, height=860):
+    def __init__(self, width=1400, height=790):
         import websocket  # python3-websocket
         self.profile = tempfile.mkdtemp(prefix="ede-view-chromium-")
         self.proc = subprocess.Popen(
@@ -146,6 +146,7 @@ class Browser:
         self.next_id = 0
         self.send("Page.enable")
         self.send("Runtime.enable")
+        self.send("Emulation.setDeviceMetricsOverride", width=width, height=height, deviceScaleFactor=1, mobile=False)
 
     def send(self, method, **params):
         self.next_id += 1

@@ -258,6 +258,7 @@ async function openLog() {
 // Asks for the state at t (a number, or the exact text typed).
 function setLogTime(t, text) {
   if (!logInfo) return;
+  if (text === 'end') t = logInfo.end;
   t = Math.min(Math.max(t, logInfo.start), logInfo.end);
   logWanted = text !== undefined ? text : String(t);
   $('time').value = Math.round(100000 * (t - logInfo.start) / ((logInfo.end - logInfo.start) || 1));
