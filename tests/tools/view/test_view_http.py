@@ -7,6 +7,7 @@ import json
 import os
 import struct
 import sys
+import threading
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
@@ -112,6 +113,48 @@ def main():
         check(status == 200 and info["complete"] and info["disks"] == 300, "the live run's log is complete and reads")
         status, st = server.post("/api/run/go")
         check(status == 409 and "SETUP" in st["error"], "GO after the end says to press SETUP")
+
+        # Two tabs watch one run at a pace; then reverse time: the elastic gas comes back to its start.
+        server.json("/api/run/setup", {"scene": "0:gas.toml", "set": ["species[0].count=300"], "until": 50})
+        server.post("/api/run/pace?pace=0.5")
+        server.post("/api/run/go")
+        seen = {0: [], 1: []}
+
+        def watch(tab):
+            for _ in range(8):
+                status, raw, _ = server.get("/api/run/frame")
+                seen[tab].append(parse_frame(raw)[0]["time"] if status == 200 else -1)
+                time.sleep(0.05)
+
+        tabs = [threading.Thread(target=watch, args=(k,)) for k in (0, 1)]
+        for t in tabs:
+            t.start()
+        for t in tabs:
+            t.join()
+        check(all(seen[k] == sorted(seen[k]) and seen[k][-1] > seen[k][0] >= 0 for k in (0, 1)),
+              f"two tabs watch the same run, each sees time advance: {seen[0][-1]:.3f}, {seen[1][-1]:.3f}")
+        for _ in range(100):
+            _, st = server.json("/api/run/status")
+            if st["time"] >= 0.2:
+                break
+            time.sleep(0.05)
+        server.post("/api/run/reverse")
+        server.post("/api/run/pace?pace=0")  # then at full speed to its end (t = 50): a complete log
+        for _ in range(300):
+            _, st = server.json("/api/run/status")
+            if st["status"].startswith("ended"):
+                break
+            time.sleep(0.1)
+        check(st["status"] == "ended: reached stop.time" and len(st["reversals"]) == 1,
+              f"the reversed run goes on to its end: {st['status']}, reversed at {st['reversals']}")
+        t_r = st["reversals"][0]
+        log_name = "1:" + st["log"]
+        status, raw, _ = server.get(f"/api/log/frame?name={log_name}&t={2 * t_r!r}")
+        check(status == 200, f"the reversed run's log reads at twice the reversal time: {status} {raw[:300]!r}")
+        back = parse_frame(raw)[1]
+        start = parse_frame(server.get(f"/api/log/frame?name={log_name}&t=0")[1])[1]
+        err = max(max(abs(back[0][i] - start[0][i]), abs(back[1][i] - start[1][i])) for i in range(300))
+        check(err < 1e-5, f"reverse time: at 2 t_r every disk is back where it started (largest error {err:.1e} < 1e-5)")
     finally:
         code = server.close()
     check(code in (0, 143), f"ede-view stops on SIGTERM (exit {code})")
