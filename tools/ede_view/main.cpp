@@ -7,6 +7,7 @@
 // taken by a thread with sigwait, which stops the server from outside any handler. Rejected: stopping
 // from a signal handler (httplib's stop() is not async-signal-safe).
 #include <CLI/CLI.hpp>
+#include <atomic>
 #include <csignal>
 #include <malloc.h>
 #include <cstdio>
@@ -90,17 +91,20 @@ int body(int argc, char** argv) {
   std::printf("ede-view: serving http://%s:%d/\n", opt.host.c_str(), port);
   std::printf("ede-view: live runs write their logs to %s\n", opt.out_dir.c_str());
   std::fflush(stdout);
-  int received = 0;
+  std::atomic<int> received{0};
+  std::atomic<bool> ending{false};
   std::thread waiter([&] {
     int sig = 0;
     sigwait(&signals, &sig);
-    received = sig;
+    if (!ending) received = sig;
     server.stop();
   });
-  server.serve();
-  if (received == 0) pthread_kill(waiter.native_handle(), SIGTERM);
+  const bool served = server.serve();
+  ending = true;
+  if (received == 0) pthread_kill(waiter.native_handle(), SIGTERM);  // wakes the waiter: we end ourselves
   waiter.join();
-  return received ? 128 + received : 0;
+  if (received) return 128 + received;
+  return served ? 0 : fail("the server stopped: " + opt.host + ":" + std::to_string(port));
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 #include "server.hpp"
 
 #include <httplib.h>
+#include <sys/socket.h>
 
 #include <nlohmann/json.hpp>
 
@@ -51,7 +52,13 @@ void add_assets(httplib::Server& http) {
 Server::Server(const ServerOptions& options) : impl_(std::make_unique<Impl>(options)) {
   httplib::Server& http = impl_->http;
   http.set_payload_max_length(kMaxBody);
-  http.set_tcp_nodelay(true);  // frames are written in pieces: Nagle would hold the last one back
+  http.set_tcp_nodelay(true);
+  // SO_REUSEADDR only: httplib's default adds SO_REUSEPORT, with which a second server (or another local
+  // program) could bind the same port and silently take half of the requests.
+  http.set_socket_options([](socket_t sock) {
+    int yes = 1;
+    ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  });  // frames are written in pieces: Nagle would hold the last one back
   http.set_default_headers({{"X-Content-Type-Options", "nosniff"}, {"X-Frame-Options", "DENY"}});
   const bool check_host = loopback(options.host);
   http.set_pre_routing_handler([check_host](const httplib::Request& req, httplib::Response& res) {
@@ -96,7 +103,7 @@ int Server::bind() {
   return impl_->http.bind_to_port(impl_->options.host, impl_->options.port) ? impl_->options.port : -1;
 }
 
-void Server::serve() { impl_->http.listen_after_bind(); }
+bool Server::serve() { return impl_->http.listen_after_bind(); }
 
 void Server::stop() { impl_->http.stop(); }
 

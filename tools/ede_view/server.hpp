@@ -1,7 +1,8 @@
 // The ede-view server: cpp-httplib with the page's files, the log and live-run routes, and the limits that
 // make it safe by default (listen on 127.0.0.1; requests only for files under the given folders; bodies
 // over 64 KiB and URIs over 8 KiB refused; a Host header naming another machine refused while bound to a
-// loopback address, against DNS rebinding; every error a JSON {"error": ...} with a 4xx status).
+// loopback address, against DNS rebinding; a port in use is an error, never shared (no SO_REUSEPORT);
+// every error a JSON {"error": ...} with a 4xx status).
 #pragma once
 
 #include <cstdint>
@@ -27,7 +28,7 @@ class Server {
   explicit Server(const ServerOptions& options);
   ~Server();
   int bind();    // the port bound, or -1
-  void serve();  // until stop()
+  bool serve();  // until stop(); false if it could not serve
   void stop();
 
  private:

@@ -6,12 +6,13 @@ unknown logs, bad numbers, oversized bodies and URIs, a foreign Host header, mal
 import json
 import os
 import struct
+import subprocess
 import sys
 import threading
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from viewlib import Server, check, make_log, replay_at  # noqa: E402
+from viewlib import Server, check, make_log, replay_at, tools_dir  # noqa: E402
 
 
 def parse_frame(raw):
@@ -32,8 +33,23 @@ def f32(text):
     return struct.unpack("<f", struct.pack("<f", float(text)))[0]
 
 
+def command_line():
+    view = os.path.join(tools_dir(), "ede-view")
+    run = lambda *args: subprocess.run([view, *args], capture_output=True, text=True, timeout=60)  # noqa: E731
+    r = run("--logs", "/no/such/folder", "--port", "0")
+    check(r.returncode == 1 and "--logs /no/such/folder: not a folder" in r.stderr, "a missing --logs folder: exit 1, named")
+    r = run("--port", "70000")
+    check(r.returncode == 2, "a port out of range: exit 2 (a bad command line)")
+    r = run("--help")
+    check(r.returncode == 0 and "--logs" in r.stdout, "--help")
+
+
 def main():
+    command_line()
     server = Server()
+    taken = subprocess.run([os.path.join(tools_dir(), "ede-view"), "--port", server.url.rsplit(":", 1)[1],
+                            "--out-dir", os.path.join(server.dir, "runs")], capture_output=True, text=True, timeout=60)
+    check(taken.returncode == 1 and "cannot listen" in taken.stderr, "a port in use: exit 1, says so")
     try:
         log = os.path.join(server.logs, "gas.ede")
         make_log(log, sets=["species[0].count=400", "log.keyframe_interval=2000"])

@@ -176,7 +176,11 @@ function monitors(f) {
     ['disks drawn', f.n.toLocaleString('en') + (i.stride > 1 ? ' (every ' + i.stride + 'th of ' + i.disks.toLocaleString('en') + ')' : '')]);
   if (i.status) rows.push(['run', i.status]);
   if (i.log) rows.push(['log', i.log]);
-  $('monitors').innerHTML = rows.map(([k, v]) => `<tr><td>${k}</td><td>${String(v).replace(/</g, '&lt;')}</td></tr>`).join('');
+  $('monitors').replaceChildren(...rows.map(([k, v]) => {
+    const tr = document.createElement('tr');
+    for (const text of [k, String(v)]) tr.insertCell().textContent = text;
+    return tr;
+  }));
 }
 
 function show(f) {
@@ -336,7 +340,7 @@ async function init() {
   $('stop').addEventListener('click', () => { play = 0; });
   try {
     const scenes = (await (await api('/api/scenes')).json()).scenes;
-    $('scene').innerHTML = scenes.map((s) => `<option>${s}</option>`).join('');
+    $('scene').replaceChildren(...scenes.map((s) => new Option(s, s)));  // file names as text, never as HTML
     const gas = scenes.find((s) => s.endsWith(':gas.toml'));
     if (gas) $('scene').value = gas;
     if (scenes.length) await loadScene();
@@ -349,7 +353,7 @@ async function init() {
 async function refreshLogs() {
   try {
     const logs = (await (await api('/api/logs')).json()).logs, was = $('log').value;
-    $('log').innerHTML = logs.map((s) => `<option>${s}</option>`).join('');
+    $('log').replaceChildren(...logs.map((s) => new Option(s, s)));
     if (logs.includes(was)) $('log').value = was;
     if (!logInfo || $('log').value !== logInfo.name) await openLog();
   } catch (e) { showError(e.message); }
