@@ -101,6 +101,9 @@ class Server:
         except subprocess.TimeoutExpired:
             self.proc.kill()
             status = self.proc.wait()
+        err = self.proc.stderr.read()
+        if status not in (0, 143) or "ERROR" in err or "runtime error" in err:
+            print("ede-view's stderr:\n" + err, file=sys.stderr)  # a sanitizer's report, for one
         shutil.rmtree(self.dir, ignore_errors=True)
         return status
 
