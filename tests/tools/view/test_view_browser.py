@@ -77,6 +77,7 @@ def main():
             open(os.path.join(shots, "view-live.png"), "wb").write(browser.screenshot())
         browser.eval("document.getElementById('go').click()")  # PAUSE
         browser.wait("edeView.last.info.status === 'paused'", 20)
+        time.sleep(1.0)  # the page fetches the state the run stopped at once more, 0.3 s after PAUSE
         p1 = browser.screenshot("#disks")
         time.sleep(0.4)
         check(browser.screenshot("#disks") == p1, "PAUSE stops the disks: two screenshots are the same")

@@ -245,6 +245,7 @@ async function goPause() {
     liveRunning = !liveRunning;
     $('go').textContent = liveRunning ? 'PAUSE' : 'GO';
     liveDirty = true;
+    if (!liveRunning) setTimeout(() => { liveDirty = true; }, 300);  // the state the worker stopped at
   } catch (e) { showError(e.message); }
 }
 
