@@ -10,7 +10,8 @@ set -eu
 # also written through python3-gsd).
 PACKAGES="build-essential cmake clang pkg-config capnproto libcapnp-dev libzstd-dev libcli11-dev \
 catch2 libtomlplusplus-dev libxxhash-dev zlib1g-dev nlohmann-json3-dev python3-matplotlib libcairo2-dev \
-libclang-rt-14-dev pybind11-dev python3-dev python3-numpy python3-pytest python3-gsd python3-ase"
+libclang-rt-14-dev pybind11-dev python3-dev python3-numpy python3-pytest python3-gsd python3-ase \
+ffmpeg libcpp-httplib-dev chromium python3-websocket"
 
 missing=""
 for p in $PACKAGES; do

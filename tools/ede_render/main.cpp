@@ -1,7 +1,7 @@
 // ede-render: pictures and movies of a logged run, drawn with cairo from the states replay gives.
 //
 //   ede-render LOG --at T|end -o FILE.png|FILE.svg [options]                      one picture of the state at T
-//   ede-render LOG [--from T0] [--to T1|end] --frames K|--every DT -o DIR|FILE.mp4 [options]     a movie
+//   ede-render LOG [--from T0] [--to T1|end] --frames K|--every DT -o DIR|FILE.mp4|FILE.gif [options]  a movie
 //   options: --color species|speed|displacement, --width PIXELS, --species NAME, --mark-species NAME
 //            (repeatable), --no-legend, --fps F (movies), --max-displacement D (displacement colour scale)
 //
@@ -16,15 +16,16 @@
 
 #include "tool_main.hpp"
 #include "command_line.hpp"
+#include "ffmpeg.hpp"
 #include "render.hpp"
 
 namespace {
 
 using namespace ede::render;
 
-// A movie target is a directory (any name without an extension) or an .mp4 file.
+// A movie target is a directory (any name without an extension), an .mp4 or a .gif file.
 bool movie_target_ok(const std::string& path) {
-  if (ends_with(path, ".mp4")) return true;
+  if (is_encoded_movie(path)) return true;
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) return true;
   return !std::filesystem::path(path).has_extension();
@@ -36,7 +37,7 @@ int check_and_run(const Options& opt, const CLI::App& app) {
     if (opt.frames && *opt.frames < 1) return usage_error("--frames must be at least 1");
     if (opt.every && !(*opt.every > 0)) return usage_error("--every must be > 0");
     if (!movie_target_ok(opt.output))
-      return usage_error("a movie is written to a directory of PNG frames or to an .mp4 file, not '" + opt.output +
+      return usage_error("a movie is written to a directory of PNG frames or to an .mp4 or .gif file, not '" + opt.output +
                          "'");
     return render_movie(opt);
   }
@@ -55,7 +56,7 @@ static int run_main(int argc, char** argv) {
   CLI::App app{"ede-render: draw the state of a logged run (PNG or SVG), or a movie of it (PNG frames or MP4)"};
   Options opt;
   app.add_option("log", opt.log, "event log written by ede-sim -o")->required();
-  app.add_option("-o,--output", opt.output, "FILE.png or FILE.svg; movies: a directory for the frames, or FILE.mp4")
+  app.add_option("-o,--output", opt.output, "FILE.png or FILE.svg; movies: a directory for the frames, FILE.mp4 or FILE.gif")
       ->required();
   app.add_option("--at", opt.at, "picture: the time T (read exactly in the log's scalar type), or 'end'");
   app.add_option("--from", opt.from, "movie: the first frame's time (default 0)");

@@ -1,11 +1,11 @@
-// A movie: K frames at evenly spaced times from --from to --to (or one every DT), as PNG files or an MP4.
+// A movie: K frames at evenly spaced times from --from to --to (or one every DT), as PNG files, an MP4 or a GIF.
 //
 // One LogFrames walks forward through the log (each frame continues from the previous one), so K frames
 // cost one pass over the events between them; the frame times are the library's (evenly_spaced_times,
 // times_every: exact in the log's type, computed from their index). Frames are frame_00000.png, frame_00001.png, ... in the
-// output directory; for an .mp4 they go to a fresh temporary directory, ffmpeg encodes them, and the
+// output directory; for an .mp4 or .gif they go to a fresh temporary directory, ffmpeg encodes them, and the
 // directory is removed. Without ffmpeg on PATH the frames are kept in <name>_frames/ beside the requested
-// .mp4, with a warning saying so and how to encode them later; the exit status is still 0. The colour
+// movie file, with a warning saying so and how to encode them later; the exit status is still 0. The colour
 // scale of --color displacement is fixed for the whole movie (the scale of the last frame, read before the
 // others; going back to the first then costs one keyframe) so colours mean the same in every frame.
 // Rejected: a per-frame scale (colours would flicker as the crater grows) and seeking each frame from
@@ -60,7 +60,7 @@ Status make_directory(const std::string& dir) {
   std::error_code ec;
   if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
     return Error{"'" + dir + "' exists and is not a directory (movies are written as a directory of PNG frames, "
-                 "or an .mp4 file)"};
+                 "or an .mp4 or .gif file)"};
   fs::create_directories(dir, ec);
   if (ec) return Error{"cannot create the directory '" + dir + "': " + ec.message()};
   return Ok{};
@@ -68,14 +68,14 @@ Status make_directory(const std::string& dir) {
 
 struct Target {
   std::string frames_dir;
-  bool encode = false;     // .mp4 and ffmpeg found
+  bool encode = false;     // .mp4 or .gif, and ffmpeg found
   bool temporary = false;  // frames_dir is ours to remove
   std::string ffmpeg;
 };
 
 Result<Target> choose_target(const Options& opt) {
   Target t;
-  if (!ends_with(opt.output, ".mp4")) {
+  if (!is_encoded_movie(opt.output)) {
     t.frames_dir = opt.output;
     if (Status s = make_directory(t.frames_dir); !s) return s.error();
     return t;
@@ -97,19 +97,19 @@ void warn_stale_frames(const std::string& dir, int frames) {
 
 int finish(const Options& opt, const Target& target, int frames) {
   const std::string count = std::to_string(frames) + " frame" + (frames == 1 ? "" : "s");
-  if (!ends_with(opt.output, ".mp4")) {
+  if (!is_encoded_movie(opt.output)) {
     std::printf("wrote %s to %s/\n", count.c_str(), target.frames_dir.c_str());
     return 0;
   }
   if (!target.encode) {
-    const std::string rate = tools::brief(opt.fps);
+    std::vector<std::string> argv = ffmpeg_arguments("ffmpeg", target.frames_dir, opt.fps, opt.output);
+    argv.erase(argv.begin() + 1, argv.begin() + 6);  // -nostdin ... -y: for the child process, not for people
     warn("ffmpeg is not installed (not found on PATH), so no " + opt.output + " was made; the " + count +
-         " are in " + target.frames_dir + "/. Install ffmpeg and run: ffmpeg -framerate " + rate + " -i " +
-         target.frames_dir + "/frame_%05d.png -c:v libx264 -pix_fmt yuv420p -vf pad=ceil(iw/2)*2:ceil(ih/2)*2 " +
-         opt.output);
+         " are in " + target.frames_dir + "/. Install ffmpeg (apt-get install ffmpeg, or scripts/install-deps.sh) "
+         "and run:\n  " + shell_command(argv));
     return 0;
   }
-  if (Status s = encode_mp4(target.ffmpeg, target.frames_dir, opt.fps, opt.output); !s)
+  if (Status s = encode_movie(target.ffmpeg, target.frames_dir, opt.fps, opt.output); !s)
     return fail(s.error().message + "\nthe frames are kept in " + target.frames_dir + "/");
   std::error_code ec;
   fs::remove_all(target.frames_dir, ec);

@@ -1,0 +1,121 @@
+#!/usr/bin/python3
+"""ede-view's benchmark: frames per second it serves and the page draws, and seek times in a large log.
+
+  scripts/bench_view.py [--build build] [--seconds 5] [--events 10000000]
+
+1. Live runs of examples/bench/gas-N{10^4,10^5}-phi0.3-walls.toml at full engine speed: frames fetched
+   back to back over HTTP for --seconds (what one tab polling as fast as it can gets), their size, and
+   the engine's events/s while watched against while nobody watches (the worker copies a state only when
+   a page asked for one, so watching should cost the engine little).
+2. The same scenes in headless chromium (if installed): frames the page draws per second (fetch, parse,
+   draw, histograms), at full engine speed.
+3. Seeks: a log of --events events at N = 10^4, frames at 50 random times (median and worst, HTTP
+   included, each a fresh keyframe seek + replay).
+Prints a markdown table (docs/view.md holds one, measured under load on the project's shared machine).
+Rejected: an ede-bench subcommand (ede-bench links the library's internals; this measures the server and
+the browser from outside, as a user meets them).
+"""
+import argparse
+import os
+import random
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "../tests/tools/view"))
+import viewlib  # noqa: E402
+
+
+def live(server, scene, seconds):
+    server.json("/api/run/setup", {"scene": "0:" + scene, "until": 1e6})
+    server.post("/api/run/pace?pace=0")
+    server.post("/api/run/go")
+    time.sleep(1.0)
+    _, st = server.json("/api/run/status")
+    ev_unwatched = st["events_per_second"]
+    n, size, start = 0, 0, time.perf_counter()
+    while time.perf_counter() - start < seconds:
+        _, raw, _ = server.get("/api/run/frame")
+        n += 1
+        size += len(raw)
+    elapsed = time.perf_counter() - start
+    _, st = server.json("/api/run/status")
+    server.post("/api/run/pause")
+    return n / elapsed, size / n, ev_unwatched, st["events_per_second"]
+
+
+def browser_fps(server, scene, seconds):
+    try:
+        browser = viewlib.Browser()
+    except SystemExit:
+        return None
+    try:
+        browser.goto(server.url + "/")
+        browser.eval(f"document.getElementById('scene').value = '0:{scene}'")
+        browser.eval("document.getElementById('scene').dispatchEvent(new Event('change'))")
+        time.sleep(0.5)
+        browser.eval("document.getElementById('setup').click()")
+        browser.wait("edeView.last && edeView.last.info.status === 'paused'", 60)
+        browser.eval("document.getElementById('fastest').click()")
+        browser.eval("document.getElementById('go').click()")
+        time.sleep(1.0)
+        f0, t0 = browser.eval("edeView.frames"), time.perf_counter()
+        time.sleep(seconds)
+        f1, t1 = browser.eval("edeView.frames"), time.perf_counter()
+        browser.eval("document.getElementById('go').click()")
+        return (f1 - f0) / (t1 - t0)
+    finally:
+        browser.close()
+
+
+def seeks(server, name, end, count=50):
+    rng = random.Random(1)
+    times = []
+    for _ in range(count):
+        t = repr(rng.uniform(0, end))
+        start = time.perf_counter()
+        status, _, _ = server.get(f"/api/log/frame?name={name}&t={t}")
+        times.append(time.perf_counter() - start)
+        assert status == 200
+    return statistics.median(times), max(times)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--build", default=os.path.join(HERE, "../build"))
+    ap.add_argument("--seconds", type=float, default=5)
+    ap.add_argument("--events", type=int, default=10_000_000)
+    a = ap.parse_args()
+    os.environ["EDE_TOOLS_DIR"] = os.path.join(os.path.abspath(a.build), "tools")
+    os.environ.setdefault("EDE_SOURCE_DIR", os.path.abspath(os.path.join(HERE, "..")))
+    server = viewlib.Server()
+    rows = []
+    try:
+        for n in (10_000, 100_000):
+            scene = f"bench/gas-N{n}-phi0.3-walls.toml"
+            fps, size, ev0, ev1 = live(server, scene, a.seconds)
+            page = browser_fps(server, scene, a.seconds)
+            rows.append((n, fps, size / 1e6, ev0 / 1e6, ev1 / 1e6, page))
+        log = os.path.join(server.logs, "large.ede")
+        start = time.perf_counter()
+        viewlib.make_log(log, "examples/bench/gas-N10000-phi0.3-walls.toml", [f"stop.events={a.events}"])
+        made = time.perf_counter() - start
+        _, info = server.json("/api/log/info?name=0:large.ede")
+        med, worst = seeks(server, "0:large.ede", info["end"])
+    finally:
+        server.close()
+    print("| disks | frames/s served (HTTP, back to back) | MB/frame | engine M events/s unwatched | watched | frames/s drawn by the page (headless chromium) |")
+    print("|---:|---:|---:|---:|---:|---:|")
+    for n, fps, mb, ev0, ev1, page in rows:
+        print(f"| {n} | {fps:.0f} | {mb:.2f} | {ev0:.2f} | {ev1:.2f} | {'-' if page is None else f'{page:.0f}'} |")
+    print()
+    print(f"Seeks in a log of {info['events']} events, N = {info['disks']} (written in {made:.0f} s, "
+          f"{info['keyframes']} keyframes): frame at a random time, HTTP included: median {med * 1e3:.0f} ms, "
+          f"worst {worst * 1e3:.0f} ms (50 times).")
+
+
+if __name__ == "__main__":
+    main()

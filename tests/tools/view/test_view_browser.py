@@ -1,0 +1,121 @@
+"""ede-view in a real headless browser (Debian's chromium over the DevTools protocol): SETUP and GO
+animate the disks (the canvas's pixels change between screenshots), the speed histogram converges to 2D
+Maxwell-Boltzmann, scrubbing a log shows exactly the state `ede-replay --at` prints (the page reports the
+positions it drew in window.edeView.last), and bad requests show clean errors. Skipped (exit 77) without
+chromium or under sanitizers.
+
+With EDE_VIEW_SCREENSHOTS=DIR it also saves the page's screenshots there (docs/img/view-*.png are made so).
+
+Tolerance of the Maxwell-Boltzmann check: the total-variation distance between the histogram of N = 2000
+speeds (40 bins) and the law at the measured kT is ~0.06 from sampling noise alone for an equilibrium gas;
+the test asks < 0.15 after 20 collisions per disk, and > 0.8 at the start (every disk at speed 1).
+"""
+import math
+import os
+import struct
+import sys
+import time
+
+sys.path.insert(0, os.path.dirname(__file__))
+from viewlib import Browser, Server, check, chromium_or_skip, make_log, replay_at  # noqa: E402
+
+
+def tv_distance(info):
+    """Total variation between the page's speed histogram and 2D MB at the page's kT (one mass)."""
+    h, kT, m = info["speed_hist"], info["kT"], info["mass"]
+    counts = h["counts"]
+    n = sum(counts) + h["outside"]
+    width = (h["hi"] - h["lo"]) / len(counts)
+    cdf = lambda v: 1 - math.exp(-m * v * v / (2 * kT))  # noqa: E731
+    inside = sum(abs(c / n - (cdf((k + 1) * width) - cdf(k * width))) for k, c in enumerate(counts))
+    return 0.5 * (inside + abs(h["outside"] / n - (1 - cdf(h["hi"]))))
+
+
+def f32(text):
+    return struct.unpack("<f", struct.pack("<f", float(text)))[0]
+
+
+def main():
+    chromium_or_skip()
+    shots = os.environ.get("EDE_VIEW_SCREENSHOTS")
+    server = Server()
+    browser = None
+    try:
+        log = os.path.join(server.logs, "gas.ede")
+        make_log(log, sets=["species[0].count=600", "log.keyframe_interval=3000"])
+        browser = Browser()
+        browser.goto(server.url + "/")
+        check(browser.eval("document.getElementById('scene').value") == "0:gas.toml", "the page lists the scenes, gas.toml chosen")
+
+        # SETUP shows the initial state; GO animates it.
+        browser.eval("document.getElementById('setup').click()")
+        browser.wait("edeView.last && edeView.last.info.status === 'paused'", 20)
+        check(browser.eval("edeView.last.n") == 2000, "SETUP draws the scene's 2000 disks")
+        before = browser.screenshot("#disks")
+        tv0 = tv_distance(browser.eval("edeView.last.info"))
+        check(tv0 > 0.8, f"at the start every disk has speed 1: far from MB (TV distance {tv0:.3f})")
+        browser.eval("document.getElementById('go').click()")
+        browser.wait("edeView.last.info.status === 'running' && edeView.last.time > 0.05", 20)
+        time.sleep(0.5)
+        after = browser.screenshot("#disks")
+        check(before != after, "GO animates the disks: the canvas differs between two screenshots")
+        t1 = browser.eval("edeView.last.time")
+        time.sleep(0.5)
+        check(browser.eval("edeView.last.time") > t1, "time advances while running")
+        # Fastest pace until 20 collisions per disk: the histogram is then Maxwell-Boltzmann.
+        browser.eval("document.getElementById('fastest').click()")
+        browser.wait("edeView.last.info.collisions_per_disk > 20", 60)
+        info = browser.eval("edeView.last.info")
+        tv = tv_distance(info)
+        check(tv < 0.15, f"after {info['collisions_per_disk']:.0f} collisions per disk the speeds are MB (TV distance {tv:.3f} < 0.15)")
+        check(abs(info["kT"] - 0.5) < 1e-9, f"kT stays 0.5 in an elastic gas ({info['kT']})")
+        frames = browser.eval("edeView.frames")
+        check(frames > 10, f"the page drew {frames} frames")
+        if shots:
+            browser.eval("document.getElementById('fastest').click()")
+            time.sleep(0.5)
+            open(os.path.join(shots, "view-live.png"), "wb").write(browser.screenshot())
+        browser.eval("document.getElementById('go').click()")  # PAUSE
+        browser.wait("edeView.last.info.status === 'paused'", 20)
+        time.sleep(1.0)  # the page fetches the state the run stopped at once more, 0.3 s after PAUSE
+        p1 = browser.screenshot("#disks")
+        time.sleep(0.4)
+        check(browser.screenshot("#disks") == p1, "PAUSE stops the disks: two screenshots are the same")
+
+        # Scrubbing a log: the exact state of ede-replay --at, at times between keyframes.
+        end = browser.eval("(async () => (await (await fetch('/api/log/info?name=0:gas.ede')).json()).end)()")
+        for t in ["0.5", repr(end * 0.731), "0"]:
+            browser.eval(f"edeView.openLog('0:gas.ede', '{t}')")
+            browser.wait(f"edeView.last && edeView.last.t_request === '{t}'", 20)
+            drawn = browser.eval("edeView.drawn()")
+            rows = replay_at(log, t)
+            same = len(rows) == drawn["n"] and all(
+                f32(row["x"]) == drawn["x"][i] and f32(row["y"]) == drawn["y"][i] for i, row in enumerate(rows))
+            check(same, f"the page drew at t = {t} exactly the positions of ede-replay --at {t} ({len(rows)} disks)")
+        if shots:  # the crater view: a crater log coloured by displacement
+            make_log(os.path.join(server.logs, "crater.ede"), "examples/crater.toml")
+            browser.eval("document.getElementById('colour').value = 'displacement';"
+                         "document.getElementById('colour').dispatchEvent(new Event('change'))")
+            browser.eval("edeView.openLog('0:crater.ede', 'end')")
+            browser.wait("edeView.last.t_request === 'end'", 20)
+            time.sleep(0.3)
+            open(os.path.join(shots, "view-log.png"), "wb").write(browser.screenshot())
+
+        # Bad requests, as the page sees them.
+        browser.eval("edeView.openLog('0:nope.ede')")
+        browser.wait("document.getElementById('error').textContent.includes('no file')", 10)
+        check(True, "an unknown log shows the server's message on the page")
+        got = browser.eval("(async () => { const r = await fetch('/api/log/frame?name=0:..%2F..%2F..%2Fetc%2Fpasswd&t=0');"
+                           " return [r.status, (await r.json()).error]; })()")
+        check(got[0] == 403 and "outside" in got[1], f"path traversal from the page: 403 {got[1]}")
+        got = browser.eval("(async () => { const r = await fetch('/api/run/setup', {method: 'POST', body: 'x'.repeat(70000)});"
+                           " return [r.status, (await r.json()).error]; })()")
+        check(got[0] == 413, f"an oversized body from the page: 413 {got[1]}")
+    finally:
+        if browser:
+            browser.close()
+        server.close()
+
+
+if __name__ == "__main__":
+    main()

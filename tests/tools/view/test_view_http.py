@@ -1,0 +1,180 @@
+"""ede-view over plain HTTP (no browser): the page and its files are served, a log's frame is the exact
+state of `ede-replay --at` (to float32, what the page draws), a live run runs and writes its log, and bad
+requests get clean JSON errors with a 4xx status: path traversal, absolute paths, other extensions,
+unknown logs, bad numbers, oversized bodies and URIs, a foreign Host header, malformed JSON.
+"""
+import json
+import os
+import struct
+import subprocess
+import sys
+import threading
+import time
+
+sys.path.insert(0, os.path.dirname(__file__))
+from viewlib import Server, check, make_log, replay_at, tools_dir  # noqa: E402
+
+
+def parse_frame(raw):
+    assert raw[:4] == b"EDEF"
+    (jlen,) = struct.unpack_from("<I", raw, 4)
+    info = json.loads(raw[8:8 + jlen])
+    (n,) = struct.unpack_from("<I", raw, 8 + jlen)
+    at = 12 + jlen
+    cols = []
+    for _ in range(6):
+        cols.append(struct.unpack_from(f"<{n}f", raw, at))
+        at += 4 * n
+    check(at == len(raw), "the frame's length is its header plus 6 float32 columns")
+    return info, cols
+
+
+def f32(text):
+    return struct.unpack("<f", struct.pack("<f", float(text)))[0]
+
+
+def command_line():
+    view = os.path.join(tools_dir(), "ede-view")
+    run = lambda *args: subprocess.run([view, *args], capture_output=True, text=True, timeout=60)  # noqa: E731
+    r = run("--logs", "/no/such/folder", "--port", "0")
+    check(r.returncode == 1 and "--logs /no/such/folder: not a folder" in r.stderr, "a missing --logs folder: exit 1, named")
+    r = run("--port", "70000")
+    check(r.returncode == 2, "a port out of range: exit 2 (a bad command line)")
+    r = run("--help")
+    check(r.returncode == 0 and "--logs" in r.stdout, "--help")
+
+
+def main():
+    command_line()
+    server = Server()
+    taken = subprocess.run([os.path.join(tools_dir(), "ede-view"), "--port", server.url.rsplit(":", 1)[1],
+                            "--out-dir", os.path.join(server.dir, "runs")], capture_output=True, text=True, timeout=60)
+    check(taken.returncode == 1 and "cannot listen" in taken.stderr, "a port in use: exit 1, says so")
+    try:
+        log = os.path.join(server.logs, "gas.ede")
+        make_log(log, sets=["species[0].count=400", "log.keyframe_interval=2000"])
+        status, body, ctype = server.get("/")
+        check(status == 200 and b"<canvas" in body and ctype.startswith("text/html"), "GET / serves the page")
+        check(server.get("/view.js")[0] == 200, "GET /view.js serves the script")
+        status, answer = server.json("/api/logs")
+        check(status == 200 and answer["logs"] == ["0:gas.ede"], "the log folder's logs are listed")
+        status, info = server.json("/api/log/info?name=0:gas.ede")
+        check(status == 200 and info["disks"] == 400 and info["keyframes"] > 2, "a log's summary (several keyframes)")
+
+        # Frames are the exact states of ede-replay --at, seeking through keyframes.
+        for t in ["0", "0.0123456789", str(info["end"] / 2), "end"]:
+            status, raw, ctype = server.get(f"/api/log/frame?name=0:gas.ede&t={t}")
+            check(status == 200 and ctype == "application/octet-stream", f"frame at t = {t}")
+            finfo, (x, y, r, speed, species, disp) = parse_frame(raw)
+            rows = replay_at(log, t)
+            check(finfo["sent"] == len(rows) == 400, f"t = {t}: every disk sent")
+            same = all(f32(row["x"]) == x[i] and f32(row["y"]) == y[i] and f32(row["radius"]) == r[i]
+                       for i, row in enumerate(rows))
+            check(same, f"t = {t}: positions and radii equal ede-replay --at {t} (as float32)")
+        status, raw, _ = server.get("/api/log/frame?name=0:gas.ede&t=0.3&max=100")
+        finfo, cols = parse_frame(raw)
+        check(finfo["stride"] == 4 and finfo["sent"] == 100 and finfo["disks"] == 400,
+              "above ?max= disks every k-th is sent, the monitors still count all")
+
+        # Bad requests: clean JSON errors.
+        def error(path, want, **kw):
+            status, raw, ctype = server.get(path, **kw)
+            ok = status == want and ctype.startswith("application/json") and "error" in json.loads(raw)
+            check(ok, f"{path[:60]} -> {want} with a JSON error (got {status}: {raw[:120]!r})")
+
+        error("/api/log/info?name=0:../../../../etc/passwd", 403)
+        error("/api/log/info?name=0:..%2f..%2f..%2fetc%2fpasswd", 403)
+        error("/api/log/info?name=/etc/passwd", 403)
+        error("/api/log/info?name=0:gas.toml", 403)
+        error("/api/log/info?name=0:nope.ede", 404)
+        error("/api/log/info?name=7:gas.ede", 404)
+        error("/api/log/info", 400)
+        error("/api/log/frame?name=0:gas.ede&t=abc", 400)
+        error("/api/log/frame?name=0:gas.ede&t=1e300", 400)
+        error("/api/log/frame?name=0:gas.ede", 400)
+        error("/api/scene?name=0:../../../etc/passwd", 403)
+        error("/api/no-such-thing", 404)
+        error("/" + "a" * 9000, 414)
+        error("/api/logs", 403, headers={"Host": "attacker.example:80"})
+        error("/api/run/frame", 404)
+        error("/api/run/setup", 413, data=b"{" + b" " * 100000 + b"}", method="POST")
+        error("/api/run/setup", 400, data=b"not json", method="POST")
+        # A file that is not a log, under the logs folder: refused by the reader, named.
+        with open(os.path.join(server.logs, "fake.ede"), "wb") as f:
+            f.write(b"not a log at all")
+        error("/api/log/info?name=0:fake.ede", 422)
+        # A symlink out of the folder is outside it.
+        os.symlink("/etc", os.path.join(server.logs, "out"))
+        error("/api/log/info?name=0:out/passwd.ede", 403)
+
+        # Live: SETUP, GO at full speed, the run ends at its time and its log reads.
+        status, st = server.json("/api/run/setup", {"scene": "0:gas.toml", "set": ["species[0].count=300"], "until": 2})
+        check(status == 200 and st["status"] == "paused" and st["disks"] == 300, "SETUP makes a paused run")
+        status, st = server.json("/api/run/setup", {"scene": "0:gas.toml", "set": ["species[0].nope=1"]})
+        check(status == 400 and "nope" in st["error"], "a bad override is refused with the scene's message")
+        status, st = server.json("/api/run/setup", {"scene": "0:gas.toml", "set": ["species[0].count=300"], "until": 2})
+        server.post("/api/run/pace?pace=0")
+        status, st = server.post("/api/run/go")
+        check(status == 200, "GO")
+        for _ in range(300):
+            status, st = server.json("/api/run/status")
+            if st["status"].startswith("ended"):
+                break
+            time.sleep(0.1)
+        check(st["status"] == "ended: reached stop.time" and st["time"] == 2.0, "the run reaches its time: " + st["status"])
+        status, logs = server.json("/api/logs")
+        live = [name for name in logs["logs"] if "live-" in name]
+        check(len(live) == 1, "the live run's log is listed with the logs: " + str(live))
+        status, info = server.json("/api/log/info?name=" + live[0])
+        check(status == 200 and info["complete"] and info["disks"] == 300, "the live run's log is complete and reads")
+        status, st = server.post("/api/run/go")
+        check(status == 409 and "SETUP" in st["error"], "GO after the end says to press SETUP")
+
+        # Two tabs watch one run at a pace; then reverse time: the elastic gas comes back to its start.
+        server.json("/api/run/setup", {"scene": "0:gas.toml", "set": ["species[0].count=300"], "until": 50})
+        server.post("/api/run/pace?pace=0.5")
+        server.post("/api/run/go")
+        seen = {0: [], 1: []}
+
+        def watch(tab):
+            for _ in range(8):
+                status, raw, _ = server.get("/api/run/frame")
+                seen[tab].append(parse_frame(raw)[0]["time"] if status == 200 else -1)
+                time.sleep(0.05)
+
+        tabs = [threading.Thread(target=watch, args=(k,)) for k in (0, 1)]
+        for t in tabs:
+            t.start()
+        for t in tabs:
+            t.join()
+        check(all(seen[k] == sorted(seen[k]) and seen[k][-1] > seen[k][0] >= 0 for k in (0, 1)),
+              f"two tabs watch the same run, each sees time advance: {seen[0][-1]:.3f}, {seen[1][-1]:.3f}")
+        for _ in range(100):
+            _, st = server.json("/api/run/status")
+            if st["time"] >= 0.2:
+                break
+            time.sleep(0.05)
+        server.post("/api/run/reverse")
+        server.post("/api/run/pace?pace=0")  # then at full speed to its end (t = 50): a complete log
+        for _ in range(300):
+            _, st = server.json("/api/run/status")
+            if st["status"].startswith("ended"):
+                break
+            time.sleep(0.1)
+        check(st["status"] == "ended: reached stop.time" and len(st["reversals"]) == 1,
+              f"the reversed run goes on to its end: {st['status']}, reversed at {st['reversals']}")
+        t_r = st["reversals"][0]
+        log_name = "1:" + st["log"]
+        status, raw, _ = server.get(f"/api/log/frame?name={log_name}&t={2 * t_r!r}")
+        check(status == 200, f"the reversed run's log reads at twice the reversal time: {status} {raw[:300]!r}")
+        back = parse_frame(raw)[1]
+        start = parse_frame(server.get(f"/api/log/frame?name={log_name}&t=0")[1])[1]
+        err = max(max(abs(back[0][i] - start[0][i]), abs(back[1][i] - start[1][i])) for i in range(300))
+        check(err < 1e-5, f"reverse time: at 2 t_r every disk is back where it started (largest error {err:.1e} < 1e-5)")
+    finally:
+        code = server.close()
+    check(code in (0, 143), f"ede-view stops on SIGTERM (exit {code})")
+
+
+if __name__ == "__main__":
+    main()

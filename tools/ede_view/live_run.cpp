@@ -1,0 +1,359 @@
+// LiveRuns; see live_run.hpp for the design. Locks: LiveRuns::mutex_ guards which run is current;
+// Run::m guards what the worker publishes and the requests it reads (running, pace, reverse); Run::sim_m
+// guards the Simulation's address, so interrupt() from another thread never meets a Simulation being
+// replaced by a reversal. The worker never holds Run::m while it simulates.
+#include "live_run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace ede::view {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+struct LiveRuns::Run {
+  Scene scene;
+  LiveSetup setup;
+  std::string log_path;
+  std::vector<double> reversals;
+
+  std::mutex sim_m;
+  std::unique_ptr<Simulation> sim;
+
+  std::mutex m;
+  std::condition_variable cv;
+  bool running = false, quit = false, reverse_requested = false, ended = false, catching_up = false;
+  double pace = 0.25;
+  std::shared_ptr<const State> state;
+  Reference reference;
+  std::uint64_t collisions = 0;
+  double events_per_second = 0;
+  std::string status = "paused", message;
+  std::atomic<bool> wanted{false};
+  std::thread worker;
+};
+
+namespace {
+
+SimulationOptions log_options(const std::string& path) {
+  SimulationOptions o;
+  o.log_path = path;
+  return o;
+}
+
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+std::string text_of(double v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+
+// The overrides that make a scene a live run: stop at `until`, other stop conditions lifted far away.
+std::vector<Override> live_overrides(const Scene& base, const LiveSetup& setup) {
+  std::vector<Override> o;
+  for (const std::string& s : setup.overrides) o.push_back({s});
+  o.push_back({"stop.time=" + text_of(setup.until)});
+  // A run stopped by a new SETUP or by the server's end keeps its complete chunks only: small chunks lose
+  // at most 1024 events (the log's bytes per event barely change).
+  if (!base.log.chunk_events) o.push_back({"log.chunk_events=1024"});
+  if (base.stop.collisions_per_particle) o.push_back({"stop.collisions_per_particle=1e15"});
+  if (base.stop.events) o.push_back({"stop.events=1000000000000000000"});
+  return o;
+}
+
+// actions = the scene's own plus a reversal at each time in `reversals`, in time order.
+Override actions_override(const Scene& scene, const std::vector<double>& reversals) {
+  std::vector<double> times = reversals;
+  for (const ActionSpec& a : scene.actions) times.push_back(a.time);
+  std::sort(times.begin(), times.end());
+  std::string text = "actions=[";
+  for (std::size_t k = 0; k < times.size(); ++k)
+    text += (k ? "," : "") + std::string("{time=") + text_of(times[k]) + ",kind=\"reverse_velocities\"}";
+  return {text + "]"};
+}
+
+}  // namespace
+
+namespace {
+
+void publish(LiveRuns::Run& r, Simulation& sim, double events_per_second) {
+  auto state = std::make_shared<const State>(sim.state());
+  const EventCounts counts = sim.counts();
+  std::lock_guard lock(r.m);
+  r.state = std::move(state);
+  r.collisions = counts.of(EventKind::Pair);
+  r.events_per_second = events_per_second;
+}
+
+// Makes the run again with a reversal at its current time and replays it there (live_run.hpp).
+void do_reverse(LiveRuns::Run& r) {
+  const double t_r = double(r.sim->time());
+  r.reversals.push_back(t_r);
+  {
+    std::lock_guard lock(r.m);
+    r.catching_up = true;
+    r.status = "reversing: replaying to t = " + text_of(t_r);
+  }
+  std::vector<Override> o = live_overrides(r.scene, r.setup);
+  o.push_back(actions_override(r.scene, r.reversals));
+  std::string error;
+  {
+    std::lock_guard lock(r.sim_m);
+    (void)r.sim->close();  // the new run rewrites the same log from the start
+    r.sim.reset();
+    auto scene = load_scene_file(r.setup.scene_path, o);
+    auto sim = scene ? Simulation::create(scene.value(), log_options(r.log_path)) : Result<Simulation>(scene.error());
+    if (sim)
+      r.sim = std::make_unique<Simulation>(std::move(sim).value());
+    else
+      error = sim.error().message;
+  }
+  if (r.sim) {
+    auto reached = r.sim->advance_to(t_r);
+    if (!reached) error = reached.error().message;
+  }
+  std::lock_guard lock(r.m);
+  r.catching_up = false;
+  if (!error.empty() || !r.sim) {
+    r.running = false;
+    r.ended = true;
+    r.status = "ended: the reversal failed";
+    r.message = error;
+  } else {
+    r.status = r.running ? "running" : "paused";
+  }
+}
+
+void work(LiveRuns::Run& r) {
+  Clock::time_point last_publish = Clock::now(), rate_time = Clock::now(), anchor_wall{};
+  std::uint64_t rate_events = 0, batch = 2000;
+  long double anchor_t = 0;
+  bool anchored = false;
+  double rate = 0;
+  for (;;) {
+    double pace = 0;
+    bool reverse = false;
+    {
+      std::unique_lock lock(r.m);
+      if (!r.running) anchored = false;
+      r.cv.wait(lock, [&] { return r.quit || r.running || r.reverse_requested; });
+      if (r.quit) return;
+      pace = r.pace;
+      reverse = r.reverse_requested;
+      r.reverse_requested = false;
+    }
+    if (reverse) {
+      do_reverse(r);
+      anchored = false;
+      if (r.sim) publish(r, *r.sim, rate);
+      continue;
+    }
+    if (!r.sim) return;
+    Simulation& sim = *r.sim;
+    const Clock::time_point t0 = Clock::now();
+    RunStatus status = RunStatus::Running;
+    if (pace > 0) {
+      if (!anchored) anchor_t = sim.time(), anchor_wall = t0, anchored = true;
+      long double target = anchor_t + (long double)pace * seconds_since(anchor_wall);
+      const long double cap = sim.time() + (long double)pace * 0.1L;
+      if (target > cap) target = cap, anchor_t = cap, anchor_wall = t0;  // the engine is behind: keep up
+      if (target > sim.time()) {
+        auto reached = sim.advance_to(target);
+        status = reached ? reached.value() : RunStatus::NonFinite;
+      }
+    } else {
+      status = sim.run(batch);
+      const double took = seconds_since(t0);
+      if (took < 0.008) batch = std::min<std::uint64_t>(batch * 2, 1u << 26);
+      if (took > 0.03 && batch > 256) batch /= 2;
+    }
+    const std::uint64_t events = sim.counts().events();
+    if (seconds_since(rate_time) >= 0.25) {
+      rate = double(events - std::min(events, rate_events)) / seconds_since(rate_time);
+      rate_events = events;
+      rate_time = Clock::now();
+    }
+    if (status != RunStatus::Running && !sim.interrupted()) {
+      const Status closed = sim.close();
+      publish(r, sim, rate);
+      std::lock_guard lock(r.m);
+      r.running = false;
+      r.ended = true;
+      r.status = std::string("ended: ") + to_string(status);
+      r.message = closed ? sim.message() : closed.error().message;
+      continue;
+    }
+    bool paused = false;
+    {
+      std::lock_guard lock(r.m);
+      paused = !r.running;
+    }
+    if (paused || r.wanted.exchange(false) || seconds_since(last_publish) > 0.25) {  // paused: its exact state
+      publish(r, sim, rate);
+      last_publish = Clock::now();
+    }
+    if (pace > 0) std::this_thread::sleep_until(t0 + std::chrono::milliseconds(16));
+  }
+}
+
+}  // namespace
+
+LiveRuns::LiveRuns(fs::path out_dir, std::uint64_t max_disks) : out_dir_(std::move(out_dir)), max_disks_(max_disks) {}
+
+LiveRuns::~LiveRuns() { stop_current(); }
+
+void LiveRuns::stop_current() {
+  std::shared_ptr<Run> run;
+  {
+    std::lock_guard lock(mutex_);
+    run = std::move(run_);
+  }
+  if (!run) return;
+  {
+    std::lock_guard lock(run->m);
+    run->quit = true;
+  }
+  run->cv.notify_all();
+  {
+    std::lock_guard lock(run->sim_m);
+    if (run->sim) run->sim->interrupt();
+  }
+  if (run->worker.joinable()) run->worker.join();
+  if (!run->sim) return;
+  const bool never_ran = run->sim->counts().events() == 0 && run->reversals.empty();
+  (void)run->sim->close();  // a live run's log is kept as far as it went
+  std::error_code ec;
+  if (never_ran) fs::remove(run->log_path, ec);  // SETUP without GO: nothing worth keeping
+}
+
+Result<std::string> LiveRuns::setup(const LiveSetup& setup) {
+  auto base = load_scene_file(setup.scene_path);
+  if (!base) return base.error();
+  auto scene = load_scene_file(setup.scene_path, live_overrides(base.value(), setup));
+  if (!scene) return scene.error();
+  std::uint64_t disks = 0;
+  for (const SpeciesSpec& s : scene.value().species) disks += std::uint64_t(std::max<std::int64_t>(s.count, 0));
+  if (disks > max_disks_)
+    return Error{"a live run of " + std::to_string(disks) + " disks is more than this server allows (" +
+                 std::to_string(max_disks_) + ", ede-view --max-disks)"};
+  stop_current();
+  auto run = std::make_shared<Run>();
+  run->scene = scene.value();
+  run->setup = setup;
+  {
+    std::lock_guard lock(mutex_);
+    std::error_code ec;
+    fs::create_directories(out_dir_, ec);
+    const std::string stem = fs::path(setup.scene_path).stem().string();
+    do {
+      run->log_path = (out_dir_ / ("live-" + std::to_string(++counter_) + "-" + stem + ".ede")).string();
+    } while (fs::exists(run->log_path));
+  }
+  auto sim = Simulation::create(run->scene, log_options(run->log_path));
+  if (!sim) return sim.error();
+  run->sim = std::make_unique<Simulation>(std::move(sim).value());
+  const State initial = run->sim->state();
+  run->reference = make_reference(initial);
+  run->state = std::make_shared<const State>(initial);
+  Run& r = *run;
+  run->worker = std::thread([&r] { work(r); });
+  {
+    std::lock_guard lock(mutex_);
+    run_ = run;
+  }
+  return status_json();
+}
+
+Status LiveRuns::go() {
+  std::lock_guard lock(mutex_);
+  if (!run_) return Error{"no run: press SETUP first"};
+  {
+    std::lock_guard run_lock(run_->m);
+    if (run_->ended) return Error{"the run has ended (" + run_->status + "): press SETUP for a new one"};
+    run_->running = true;
+    if (!run_->catching_up) run_->status = "running";
+  }
+  run_->cv.notify_all();
+  return Ok{};
+}
+
+Status LiveRuns::pause() {
+  std::lock_guard lock(mutex_);
+  if (!run_) return Error{"no run: press SETUP first"};
+  std::lock_guard run_lock(run_->m);
+  run_->running = false;
+  run_->wanted = true;
+  if (!run_->ended && !run_->catching_up) run_->status = "paused";
+  return Ok{};
+}
+
+Status LiveRuns::reverse() {
+  std::lock_guard lock(mutex_);
+  if (!run_) return Error{"no run: press SETUP first"};
+  {
+    std::lock_guard run_lock(run_->m);
+    if (run_->ended) return Error{"the run has ended: press SETUP for a new one"};
+    run_->reverse_requested = true;
+  }
+  run_->cv.notify_all();
+  return Ok{};
+}
+
+void LiveRuns::set_pace(double pace) {
+  std::lock_guard lock(mutex_);
+  if (!run_) return;
+  std::lock_guard run_lock(run_->m);
+  run_->pace = pace;
+}
+
+std::optional<std::string> LiveRuns::frame(std::size_t max_disks) {
+  std::shared_ptr<Run> run;
+  {
+    std::lock_guard lock(mutex_);
+    run = run_;
+  }
+  if (!run) return std::nullopt;
+  std::shared_ptr<const State> state;
+  FrameExtras extras;
+  {
+    std::lock_guard lock(run->m);
+    state = run->state;
+    extras.collisions = double(run->collisions);
+    extras.json_fields = "\"events_per_second\":" + nlohmann::json(run->events_per_second).dump() +
+                         ",\"status\":" + nlohmann::json(run->status).dump() +
+                         ",\"log\":" + nlohmann::json(fs::path(run->log_path).filename().string()).dump();
+  }
+  run->wanted = true;
+  if (!state) return std::nullopt;
+  return pack_frame(*state, run->reference, extras, max_disks);
+}
+
+std::string LiveRuns::status_json() {
+  std::shared_ptr<Run> run;
+  {
+    std::lock_guard lock(mutex_);
+    run = run_;
+  }
+  if (!run) return nlohmann::json{{"status", "none"}}.dump();
+  std::lock_guard lock(run->m);
+  return nlohmann::json{{"status", run->status},
+                        {"scene", run->setup.scene_label},
+                        {"log", fs::path(run->log_path).filename().string()},
+                        {"log_path", run->log_path},
+                        {"time", run->state ? double(run->state->time) : 0.0},
+                        {"events", run->state ? run->state->events : 0},
+                        {"disks", run->state ? run->state->size() : 0},
+                        {"events_per_second", run->events_per_second},
+                        {"pace", run->pace},
+                        {"reversals", run->reversals},
+                        {"message", run->message}}
+      .dump();
+}
+
+}  // namespace ede::view

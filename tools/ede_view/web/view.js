@@ -1,0 +1,376 @@
+// ede-view's page script: fetches frames (binary: frame.hpp) from the server and draws them on a canvas,
+// with GasLab's colours, histograms against 2D Maxwell-Boltzmann and monitors. One fetch at a time,
+// paced by requestAnimationFrame, so the page asks for states at its own display rate and a slow machine
+// simply skips frames. window.edeView exposes what was drawn (positions, time, counts) for the tests
+// (tests/tools/view/) and for anyone curious, in the browser's console.
+// Rejected: a framework or a plotting library (a build step or a CDN) and WebGL (the 2D canvas draws
+// 10^5 disks a frame here; the density view covers the rest).
+'use strict';
+
+const $ = (id) => document.getElementById(id);
+const view = { frames: 0, last: null, mode: 'live', errors: [] };
+window.edeView = view;
+
+let busy = false, liveRunning = false, liveDirty = false, logInfo = null, logWanted = null, logShown = null;
+let play = 0, playFrom = 0, playWall = 0;
+
+function showError(message) {
+  $('error').textContent = message || '';
+  if (message) view.errors.push(message);
+}
+
+async function api(path, options) {
+  const res = await fetch(path, options);
+  if (!res.ok) {
+    let message = res.status + ' ' + res.statusText;
+    try { message = (await res.json()).error; } catch (e) { /* not JSON */ }
+    throw new Error(message);
+  }
+  return res;
+}
+
+// Frame: "EDEF" | u32 json bytes | JSON | u32 n | f32 x, y, r, speed, species, displacement.
+function parseFrame(buffer) {
+  const dv = new DataView(buffer);
+  const magic = String.fromCharCode(dv.getUint8(0), dv.getUint8(1), dv.getUint8(2), dv.getUint8(3));
+  if (magic !== 'EDEF') throw new Error('not a frame');
+  const jsonBytes = dv.getUint32(4, true);
+  const info = JSON.parse(new TextDecoder().decode(new Uint8Array(buffer, 8, jsonBytes)));
+  const n = dv.getUint32(8 + jsonBytes, true);
+  let at = 12 + jsonBytes;
+  const col = () => { const a = new Float32Array(buffer, at, n); at += 4 * n; return a; };
+  return { info, n, x: col(), y: col(), r: col(), speed: col(), species: col(), displacement: col() };
+}
+
+const SPECIES = ['#4fc3f7', '#ffb74d', '#81c784', '#e57373', '#ba68c8', '#fff176', '#a1887f', '#90a4ae'];
+const CLASSES = ['#2962ff', '#00c853', '#ff1744'];  // GasLab: slow blue, medium green, fast red
+const RAMP = ['#313695', '#4575b4', '#74add1', '#abd9e9', '#fee090', '#fdae61', '#f46d43', '#d73027', '#a50026'];
+
+// The colour group of every disk: an index into the palette returned.
+function colourGroups(f) {
+  const mode = $('colour').value, g = new Uint8Array(f.n);
+  if (mode === 'species') {
+    for (let i = 0; i < f.n; i++) g[i] = f.species[i] % SPECIES.length;
+    return { groups: g, palette: SPECIES };
+  }
+  if (mode === 'displacement') {
+    let max = 0;
+    for (let i = 0; i < f.n; i++) max = Math.max(max, f.displacement[i]);
+    const k = max > 0 ? (RAMP.length - 1) / max : 0;
+    for (let i = 0; i < f.n; i++) g[i] = Math.round(f.displacement[i] * k);
+    return { groups: g, palette: RAMP };
+  }
+  const [lo, hi] = f.info.class_speeds;
+  for (let i = 0; i < f.n; i++) g[i] = f.speed[i] < lo ? 0 : f.speed[i] > hi ? 2 : 1;
+  return { groups: g, palette: CLASSES };
+}
+
+// Colours as the canvas's pixels hold them (RGBA bytes read as one little-endian uint32).
+const pixelCache = new Map();
+function pixel(hex) {
+  if (!pixelCache.has(hex)) {
+    const v = parseInt(hex.slice(1), 16);
+    pixelCache.set(hex, (0xff000000 | ((v & 0xff) << 16) | (v & 0xff00) | ((v >> 16) & 0xff)) >>> 0);
+  }
+  return pixelCache.get(hex);
+}
+
+let image = null;
+
+// Disks of a few pixels or less are written straight into the image's pixels (each the pixels whose
+// centres lie inside it, at least one): ~10x faster than canvas arcs at 10^4-10^5 disks, and it is the
+// density view when disks are below a pixel. Larger disks are drawn as arcs, antialiased.
+function drawDisks(f) {
+  const c = $('disks'), ctx = c.getContext('2d'), W = c.width, H = c.height;
+  const { lx, ly } = f.info;
+  const scale = Math.min(W / lx, H / ly);
+  const { groups, palette } = colourGroups(f);
+  let rmax = 0;
+  for (let i = 0; i < f.n; i++) rmax = Math.max(rmax, f.r[i]);
+  if (rmax * scale < 4) {
+    if (!image || image.width !== W || image.height !== H) image = ctx.createImageData(W, H);
+    const buf = new Uint32Array(image.data.buffer), colours = palette.map(pixel);
+    buf.fill(0xff000000);
+    for (let i = 0; i < f.n; i++) {
+      const px = f.x[i] * scale, py = (ly - f.y[i]) * scale, pr = f.r[i] * scale, colour = colours[groups[i]];
+      const x0 = Math.max(0, Math.floor(px - pr)), x1 = Math.min(W - 1, Math.ceil(px + pr));
+      const y0 = Math.max(0, Math.floor(py - pr)), y1 = Math.min(H - 1, Math.ceil(py + pr));
+      let drawn = false;
+      for (let y = y0; y <= y1; y++) {
+        const dy = y + 0.5 - py;
+        for (let x = x0; x <= x1; x++) {
+          const dx = x + 0.5 - px;
+          if (dx * dx + dy * dy <= pr * pr) { buf[y * W + x] = colour; drawn = true; }
+        }
+      }
+      const cx = Math.floor(px), cy = Math.floor(py);
+      if (!drawn && cx >= 0 && cx < W && cy >= 0 && cy < H) buf[cy * W + cx] = colour;
+    }
+    ctx.putImageData(image, 0, 0);
+  } else {
+    ctx.fillStyle = '#000';
+    ctx.fillRect(0, 0, W, H);
+    for (let p = 0; p < palette.length; p++) {
+      ctx.fillStyle = palette[p];
+      ctx.beginPath();
+      for (let i = 0; i < f.n; i++) {
+        if (groups[i] !== p) continue;
+        const px = f.x[i] * scale, py = (ly - f.y[i]) * scale, pr = f.r[i] * scale;
+        ctx.moveTo(px + pr, py);
+        ctx.arc(px, py, pr, 0, 2 * Math.PI);
+      }
+      ctx.fill();
+    }
+  }
+  ctx.strokeStyle = '#666';
+  ctx.strokeRect(0.5, 0.5, lx * scale - 1, ly * scale - 1);
+}
+
+function drawHistogram(canvasId, h, curve, means) {
+  const c = $(canvasId), ctx = c.getContext('2d'), W = c.width, H = c.height, pad = 18;
+  ctx.clearRect(0, 0, W, H);
+  const bins = h.counts.length, width = (h.hi - h.lo) / bins;
+  const total = h.counts.reduce((a, b) => a + b, 0) + h.outside;
+  const expected = [];
+  for (let k = 0; k <= 100; k++) {
+    const v = h.lo + (h.hi - h.lo) * k / 100;
+    expected.push(curve ? curve(v) * total * width : 0);
+  }
+  const top = Math.max(1, ...h.counts, ...expected) * 1.1;
+  const X = (v) => pad + (W - 2 * pad) * (v - h.lo) / (h.hi - h.lo), Y = (n) => H - pad - (H - 2 * pad) * n / top;
+  ctx.fillStyle = '#90caf9';
+  for (let k = 0; k < bins; k++) ctx.fillRect(X(h.lo + k * width), Y(h.counts[k]), X(width) - X(0) - 1, Y(0) - Y(h.counts[k]));
+  if (curve) {
+    ctx.strokeStyle = '#c62828';
+    ctx.lineWidth = 2;
+    ctx.beginPath();
+    expected.forEach((e, k) => { const x = X(h.lo + (h.hi - h.lo) * k / 100); k ? ctx.lineTo(x, Y(e)) : ctx.moveTo(x, Y(e)); });
+    ctx.stroke();
+  }
+  ctx.lineWidth = 1;
+  ctx.setLineDash([4, 3]);
+  means.forEach(([v, colour]) => { if (!(v > 0)) return; ctx.strokeStyle = colour; ctx.beginPath(); ctx.moveTo(X(v), Y(0)); ctx.lineTo(X(v), pad); ctx.stroke(); });
+  ctx.setLineDash([]);
+  ctx.fillStyle = '#333';
+  ctx.fillText('0', pad, H - 4);
+  ctx.fillText(h.hi.toPrecision(3), W - pad - 24, H - 4);
+}
+
+function drawPlots(f) {
+  const i = f.info, kT = i.kT, m = i.mass;
+  const mbSpeed = kT > 0 && m ? (v) => (m * v / kT) * Math.exp(-m * v * v / (2 * kT)) : null;
+  drawHistogram('speed-hist', i.speed_hist, mbSpeed, [[i.mean_speed0, '#999'], [i.mean_speed, '#000']]);
+  const mbEnergy = kT > 0 ? (e) => Math.exp(-e / kT) / kT : null;
+  drawHistogram('energy-hist', i.energy_hist, mbEnergy, [[i.kT0, '#999'], [i.kT, '#000']]);
+}
+
+function monitors(f) {
+  const i = f.info, rows = [
+    ['time', i.time.toPrecision(6)],
+    ['events', i.events.toLocaleString('en')],
+  ];
+  if (i.events_per_second !== undefined) rows.push(['events / s', Math.round(i.events_per_second).toLocaleString('en')]);
+  rows.push(['collisions per disk', (view.mode === 'log' ? '≈ ' : '') + i.collisions_per_disk.toFixed(2)],
+    ['kT (initial)', i.kT.toPrecision(4) + ' (' + i.kT0.toPrecision(4) + ')'],
+    ['% slow / medium / fast', i.percent.map((p) => p.toFixed(1)).join(' / ')],
+    ['disks drawn', f.n.toLocaleString('en') + (i.stride > 1 ? ' (every ' + i.stride + 'th of ' + i.disks.toLocaleString('en') + ')' : '')]);
+  if (i.status) rows.push(['run', i.status]);
+  if (i.log) rows.push(['log', i.log]);
+  $('monitors').replaceChildren(...rows.map(([k, v]) => {
+    const tr = document.createElement('tr');
+    for (const text of [k, String(v)]) tr.insertCell().textContent = text;
+    return tr;
+  }));
+}
+
+function show(f) {
+  drawDisks(f);
+  drawPlots(f);
+  monitors(f);
+  view.frames++;
+  view.last = { time: f.info.time, t_request: f.info.t_request, events: f.info.events, n: f.n,
+    stride: f.info.stride, x: f.x, y: f.y, r: f.r, info: f.info };
+}
+
+async function fetchFrame(path) {
+  const res = await api(path);
+  show(parseFrame(await res.arrayBuffer()));
+}
+
+// --- live runs ---------------------------------------------------------------------------------------
+
+function paceValue() { return $('fastest').checked ? 0 : Math.pow(10, Number($('pace').value)); }
+
+async function sendPace() {
+  $('pace-text').textContent = $('fastest').checked ? 'max' : paceValue().toPrecision(2) + ' / s';
+  try { await api('/api/run/pace?pace=' + paceValue(), { method: 'POST' }); } catch (e) { /* no run yet */ }
+}
+
+async function loadScene() {
+  const s = await (await api('/api/scene?name=' + encodeURIComponent($('scene').value))).json();
+  $('count').value = s.count;
+  $('radius').value = s.radius ?? '';
+  $('radius').placeholder = s.radius === null ? 'from the scene' : '';
+  $('restitution').value = s.restitution;
+  $('tc').value = s.tc;
+  $('gravity').value = -s.gravity[1];
+  $('boundary').value = s.boundary;
+}
+
+async function setup() {
+  showError('');
+  const scene = await (await api('/api/scene?name=' + encodeURIComponent($('scene').value))).json();
+  const set = [];
+  const changed = (id, now) => $(id).value !== '' && Number($(id).value) !== now;
+  if (changed('count', scene.count)) set.push('species[0].count=' + Math.round(Number($('count').value)));
+  if (changed('radius', scene.radius)) set.push('species[0].radius=' + Number($('radius').value));
+  if (changed('restitution', scene.restitution)) set.push('physics.restitution=' + Number($('restitution').value));
+  if (changed('tc', scene.tc)) set.push('physics.tc=' + Number($('tc').value));
+  if (changed('gravity', -scene.gravity[1])) set.push('physics.gravity=[0,' + (-Number($('gravity').value)) + ']');
+  if ($('boundary').value !== scene.boundary) set.push('box.boundary="' + $('boundary').value + '"');
+  try {
+    await api('/api/run/setup', { method: 'POST', headers: { 'Content-Type': 'application/json' },
+      body: JSON.stringify({ scene: $('scene').value, set, until: Number($('until').value) || 100 }) });
+    liveRunning = false;
+    $('go').textContent = 'GO';
+    $('go').disabled = $('reverse').disabled = false;
+    await sendPace();
+    liveDirty = true;
+  } catch (e) { showError(e.message); }
+}
+
+async function goPause() {
+  try {
+    await api(liveRunning ? '/api/run/pause' : '/api/run/go', { method: 'POST' });
+    liveRunning = !liveRunning;
+    $('go').textContent = liveRunning ? 'PAUSE' : 'GO';
+    liveDirty = true;
+    if (!liveRunning) setTimeout(() => { liveDirty = true; }, 300);  // the state the worker stopped at
+  } catch (e) { showError(e.message); }
+}
+
+// --- logs --------------------------------------------------------------------------------------------
+
+async function openLog() {
+  showError('');
+  try {
+    logInfo = await (await api('/api/log/info?name=' + encodeURIComponent($('log').value))).json();
+    play = 0;
+    setLogTime(logInfo.start);
+  } catch (e) { logInfo = null; showError(e.message); }
+}
+
+// Asks for the state at t (a number, or the exact text typed).
+function setLogTime(t, text) {
+  if (!logInfo) return;
+  if (text === 'end') t = logInfo.end;
+  t = Math.min(Math.max(t, logInfo.start), logInfo.end);
+  logWanted = text !== undefined ? text : String(t);
+  $('time').value = Math.round(100000 * (t - logInfo.start) / ((logInfo.end - logInfo.start) || 1));
+  $('time-text').value = logWanted;
+}
+
+function startPlay(direction) {
+  if (!logInfo) return;
+  play = direction;
+  playFrom = Number(logWanted ?? logInfo.start);
+  playWall = performance.now();
+}
+
+// --- the loop ----------------------------------------------------------------------------------------
+
+// One request in flight at a time; in a live run the next frame is fetched while this one is drawn.
+let pending = null;
+
+function liveFetch() {
+  return api('/api/run/frame').then((res) => res.arrayBuffer());
+}
+
+async function tick() {
+  requestAnimationFrame(tick);
+  if (busy) return;
+  busy = true;
+  try {
+    if (view.mode === 'live' && (liveRunning || liveDirty || pending)) {
+      liveDirty = false;
+      const prefetched = pending !== null;
+      const buffer = await (pending || liveFetch());
+      pending = liveRunning ? liveFetch() : null;
+      if (prefetched && !liveRunning) liveDirty = true;  // fetched before PAUSE: fetch the paused state too
+      show(parseFrame(buffer));
+    } else if (view.mode === 'log' && logInfo) {
+      if (play) {
+        const t = playFrom + play * Number($('play-speed').value) * (performance.now() - playWall) / 1000;
+        setLogTime(t);
+        if (t <= logInfo.start || t >= logInfo.end) play = 0;
+      }
+      if (logWanted !== null && logWanted !== logShown) {
+        const want = logWanted;
+        await fetchFrame('/api/log/frame?name=' + encodeURIComponent($('log').value) + '&t=' + encodeURIComponent(want));
+        logShown = want;
+      }
+    }
+  } catch (e) {
+    showError(e.message);
+    play = 0;
+    pending = null;
+    logShown = logWanted;
+  }
+  busy = false;
+}
+
+async function init() {
+  document.querySelectorAll('input[name=mode]').forEach((r) => r.addEventListener('change', () => {
+    view.mode = r.value;
+    $('live').hidden = view.mode !== 'live';
+    $('logs').hidden = view.mode !== 'log';
+    if (view.mode === 'log') refreshLogs(); else liveDirty = true;
+  }));
+  $('colour').addEventListener('change', () => { liveDirty = true; logShown = null; });
+  $('scene').addEventListener('change', () => loadScene().catch((e) => showError(e.message)));
+  $('setup').addEventListener('click', setup);
+  $('go').addEventListener('click', goPause);
+  $('reverse').addEventListener('click', () => api('/api/run/reverse', { method: 'POST' }).catch((e) => showError(e.message)));
+  $('pace').addEventListener('input', sendPace);
+  $('fastest').addEventListener('change', sendPace);
+  $('log').addEventListener('change', openLog);
+  $('time').addEventListener('input', () => { play = 0; setLogTime(logInfo.start + (logInfo.end - logInfo.start) * Number($('time').value) / 100000); });
+  $('time-text').addEventListener('change', () => { play = 0; setLogTime(Number($('time-text').value), $('time-text').value.trim()); });
+  $('fwd').addEventListener('click', () => startPlay(1));
+  $('back').addEventListener('click', () => startPlay(-1));
+  $('stop').addEventListener('click', () => { play = 0; });
+  try {
+    const scenes = (await (await api('/api/scenes')).json()).scenes;
+    $('scene').replaceChildren(...scenes.map((s) => new Option(s, s)));  // file names as text, never as HTML
+    const gas = scenes.find((s) => s.endsWith(':gas.toml'));
+    if (gas) $('scene').value = gas;
+    if (scenes.length) await loadScene();
+  } catch (e) { showError(e.message); }
+  $('pace-text').textContent = paceValue().toPrecision(2) + ' / s';
+  view.ready = true;
+  requestAnimationFrame(tick);
+}
+
+async function refreshLogs() {
+  try {
+    const logs = (await (await api('/api/logs')).json()).logs, was = $('log').value;
+    $('log').replaceChildren(...logs.map((s) => new Option(s, s)));
+    if (logs.includes(was)) $('log').value = was;
+    if (!logInfo || $('log').value !== logInfo.name) await openLog();
+  } catch (e) { showError(e.message); }
+}
+
+// What was drawn last, as plain arrays (for the DevTools protocol, which passes typed arrays as objects).
+view.drawn = () => ({ ...view.last, x: Array.from(view.last.x), y: Array.from(view.last.y), r: Array.from(view.last.r) });
+
+// For tests and the console: open a log and show the state at the exact time text t.
+view.openLog = async (name, t) => {
+  document.querySelector('input[name=mode][value=log]').click();
+  await refreshLogs();
+  if (![...$('log').options].some((o) => o.value === name)) $('log').add(new Option(name, name));
+  $('log').value = name;
+  await openLog();
+  if (t !== undefined) setLogTime(Number(t), String(t));
+};
+
+init();
