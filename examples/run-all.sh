@@ -84,4 +84,7 @@ sim "$root/examples/fast-disk.toml" -o "$logs/fast-disk.ede"
 section "time reversal: forward, reverse, back (examples/time-reversal.toml)"
 "$py" "$root/examples/scripts/time_reversal.py" "$tools" "$out"
 
+section "continuing a run: cooled and reversed, against Enskog and Haff (examples/continue.toml)"
+"$py" "$root/examples/scripts/continue_from_state.py" "$tools" "$out"
+
 printf '\nall figures in %s (%s s)\n' "$out" "$(( $(date +%s) - start ))"

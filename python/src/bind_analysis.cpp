@@ -92,6 +92,7 @@ void bind_analysis(py::module_& m) {
     d["restitution"] = c.restitution, d["spacing"] = c.spacing, d["mean_free_time"] = c.mean_free_time;
     d["initial_energy"] = c.initial_energy, d["haff_tau"] = c.haff_tau;
     d["haff_calibration"] = c.haff_calibration, d["max_drift"] = c.max_drift();
+    d["enskog_tau"] = c.enskog_tau, d["enskog_tau_error"] = c.enskog_tau_error, d["enskog_rate0"] = c.enskog_rate0;
     std::vector<double> haff(c.series.time.size());
     for (std::size_t k = 0; k < haff.size(); ++k) haff[k] = c.haff_ratio(k);
     d["haff_ratio"] = arr(haff);
@@ -103,6 +104,7 @@ void bind_analysis(py::module_& m) {
     py::dict d = series_dict(c.series);
     d["reference_speed"] = c.reference_speed;
     d["rate"] = arr(c.rate), d["mean_free_time"] = arr(c.mean_free_time);
+    d["enskog_rate"] = arr(c.enskog_rate);
     std::vector<double> slow, medium, fast;
     for (const SpeedClasses& k : c.classes)
       slow.push_back(k.slow_percent), medium.push_back(k.medium_percent), fast.push_back(k.fast_percent);

@@ -199,7 +199,7 @@ TEST_CASE("ede-stats collisions: counts equal the log's, speed classes sum to 10
   REQUIRE(rows.size() >= 101);
   CHECK(rows[0] ==
         "time,pair_collisions,wall_collisions,collisions_per_particle,collision_rate,mean_free_time,"
-        "slow_percent,medium_percent,fast_percent");
+        "slow_percent,medium_percent,fast_percent,enskog_rate");
   auto reader = ede::LogReader::open(log);
   REQUIRE(reader);
   auto kinds = ede::count_logged_kinds(*reader.value());

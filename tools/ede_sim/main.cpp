@@ -2,6 +2,7 @@
 //
 //   ede-sim SCENE.toml [-o LOG] [--set key=value]... [--json] [--final-state FILE.csv] [-q]
 //   ede-sim --resume LOG [--json] [--final-state FILE.csv] [-q]
+//   ede-sim --continue LOG [--at T] -o NEW_LOG [--set key=value]...   (a new run from LOG's state at T)
 //
 // Thin: parses the command line, hands the scene to ede::Simulation, prints. Exit status (docs/cli.md): 0
 // when the run ended on a stop condition or ran out of events, 3 on inelastic collapse (stalled, or a
@@ -13,6 +14,7 @@
 // length (pace_watch.hpp).
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,8 +31,9 @@
 namespace {
 
 struct Options {
-  std::string scene_path, log_path, resume_path, final_state_path;
+  std::string scene_path, log_path, resume_path, continue_path, final_state_path;
   std::vector<std::string> overrides;
+  std::optional<double> at;
   bool json = false, quiet = false;
 };
 
@@ -57,7 +60,8 @@ ede::Result<ede::Simulation> start(const Options& opt, const ede::SimulationOpti
   if (!opt.resume_path.empty()) return ede::Simulation::resume(opt.resume_path, sim_options);
   std::vector<ede::Override> overrides;
   for (const std::string& o : opt.overrides) overrides.push_back({o});
-  auto scene = ede::load_scene_file(opt.scene_path, overrides);
+  auto scene = opt.continue_path.empty() ? ede::load_scene_file(opt.scene_path, overrides)
+                                         : ede::continuation_scene(opt.continue_path, opt.at, overrides);
   if (!scene) return scene.error();
   for (const std::string& w : ede::scene_warnings(scene.value())) std::fprintf(stderr, "ede-sim: warning: %s\n", w.c_str());
   if (ede::Status m = check_memory(scene.value(), !opt.log_path.empty()); !m) return m.error();
@@ -65,7 +69,7 @@ ede::Result<ede::Simulation> start(const Options& opt, const ede::SimulationOpti
     return ede::Simulation::create(scene.value(), sim_options);
   } catch (const std::bad_alloc&) {
     return ede::Error{ede::tools::out_of_memory_message(
-        "setting up " + opt.scene_path + " (estimated need " +
+        "setting up " + scene.value().source_name + " (estimated need " +
         mib(ede::estimated_memory_bytes(scene.value(), !opt.log_path.empty())) + ")")};
   }
 }
@@ -113,19 +117,25 @@ int run(int argc, char** argv) {
   app.add_option("scene", opt.scene_path, "scene file (TOML); see docs/scene-format.md");
   app.add_option("-o,--output,--log", opt.log_path, "write every event to this log (any file name; see schema/FORMAT.md)");
   app.add_option("--resume", opt.resume_path, "continue the interrupted run logged in this file, in place");
+  app.add_option("--continue", opt.continue_path,
+                 "start a new run (-o) from the state of this log, with its scene changed by --set (e.g. "
+                 "physics.restitution=0.9, start.reverse_velocities=true); the new log records where it came from");
+  app.add_option("--at", opt.at, "with --continue: the time in that log to start from (default: its end)");
   app.add_option("--set", opt.overrides, "override a scene value, e.g. --set physics.restitution=0.9 (repeatable)");
   app.add_flag("--json", opt.json, "print the summary as one JSON object on stdout");
   app.add_option("--final-state", opt.final_state_path, "write the final state as CSV (exact numbers)");
   app.add_flag("-q,--quiet", opt.quiet, "no progress output");
   ede::tools::add_version_flags(app, "ede-sim");
   if (const auto stop = ede::tools::parse_command_line(app, argc, argv)) return *stop;
-  if (opt.resume_path.empty() == opt.scene_path.empty())
-    return std::fprintf(stderr, "ede-sim: give either a scene file or --resume LOG (see ede-sim --help)\n"), 2;
+  if (int(!opt.resume_path.empty()) + int(!opt.scene_path.empty()) + int(!opt.continue_path.empty()) != 1)
+    return std::fprintf(stderr, "ede-sim: give one of a scene file, --resume LOG or --continue LOG (see ede-sim --help)\n"), 2;
+  if (opt.at && opt.continue_path.empty())
+    return std::fprintf(stderr, "ede-sim: --at is the time to continue from: it goes with --continue LOG\n"), 2;
   if (!opt.resume_path.empty() && (!opt.log_path.empty() || !opt.overrides.empty()))
     return std::fprintf(stderr, "ede-sim: --resume continues the log in place: it takes no -o or --set\n"), 2;
 
   const ede::Status distinct = ede::tools::check_outputs_distinct(
-      {{"the scene", opt.scene_path}, {"the log to resume", opt.resume_path}},
+      {{"the scene", opt.scene_path}, {"the log to resume", opt.resume_path}, {"the log to continue", opt.continue_path}},
       {{"-o", opt.log_path}, {"--final-state", opt.final_state_path}});
   if (!distinct) return fail(distinct.error().message);
 

@@ -5,6 +5,7 @@
 // and the speed classes; this file prints a summary, writes the CSV (no rate in the first row: no interval
 // before it) and has plot_collisions.py draw it. Rejected: a CSV column for every count a log keeps
 // (cell crossings, wraps), which no figure of a gas needs.
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -24,7 +25,7 @@ struct CollisionOptions {
 
 constexpr const char* kCollisionsCsvHeader =
     "time,pair_collisions,wall_collisions,collisions_per_particle,collision_rate,mean_free_time,slow_percent,"
-    "medium_percent,fast_percent\n";
+    "medium_percent,fast_percent,enskog_rate\n";
 
 std::string csv_of(const CollisionSeries& c) {
   const LogSeries& s = c.series;
@@ -34,7 +35,7 @@ std::string csv_of(const CollisionSeries& c) {
     text += exact(s.time[k]) + "," + std::to_string(s.pair_collisions[k]) + "," + std::to_string(s.wall_collisions[k]) +
             "," + exact(s.collisions_per_particle(k)) + "," + exact_cell(c.rate[k]) + "," +
             exact_cell(c.mean_free_time[k]) + "," + exact(sc.slow_percent) + "," + exact(sc.medium_percent) + "," +
-            exact(sc.fast_percent) + "\n";
+            exact(sc.fast_percent) + "," + exact_cell(c.enskog_rate[k]) + "\n";
   }
   return text;
 }
@@ -51,6 +52,23 @@ void report(const std::string& path, const LogOverview& o, const CollisionSeries
     std::printf("collision rate          %s per disk per unit time (average over the run)\n",
                 brief(s.collisions_per_particle(last) / t).c_str());
   std::printf("mean free time          %s (N t / 2 pairs)\n", brief(o.mean_free_time()).c_str());
+  const EnskogReference& e = c.enskog;
+  if (!e.applicable) {
+    std::printf("Enskog                  no reference: %s\n", e.why_not.c_str());
+  } else {
+    double measured = 0, expected = 0;  // time-weighted over the intervals
+    for (std::size_t k = 1; k < s.time.size(); ++k)
+      if (std::isfinite(c.rate[k]) && std::isfinite(c.enskog_rate[k]))
+        measured += c.rate[k] * (s.time[k] - s.time[k - 1]), expected += c.enskog_rate[k] * (s.time[k] - s.time[k - 1]);
+    std::printf("Enskog rate at t = 0    omega_E = 2 n sigma g(sigma) sqrt(pi kT/m) = %s per disk (n = N/(Lx Ly) = %s, "
+                "phi = %s, g(sigma) = %s Henderson, kT = %s: %s)\n",
+                brief(e.rate).c_str(), brief(e.number_density).c_str(), brief(e.packing_fraction).c_str(),
+                brief(e.g_contact).c_str(), brief(e.temperature.kT).c_str(),
+                e.temperature.degrees < double(o.disks) ? "centre-of-mass frame, N - 1 disks" : "box frame, N disks");
+    if (expected > 0)
+      std::printf("measured / Enskog       %s over the run (each interval against omega_E at its kT)\n",
+                  brief(measured / expected).c_str());
+  }
   std::printf("speed classes           v_ref = %s (initial mean speed): slow < %s, fast > %s\n", brief(v).c_str(),
               brief(0.5 * v).c_str(), brief(1.5 * v).c_str());
   for (const std::size_t k : {std::size_t(0), last})
@@ -89,7 +107,8 @@ Command add_collisions_command(CLI::App& app) {
   cmd->add_option("--every", opt->every, "grid spacing (default: 1/100 of the run)");
   cmd->add_option("-o,--output", opt->output,
                   "write CSV: time,pair_collisions,wall_collisions,collisions_per_particle,collision_rate,"
-                  "mean_free_time,slow_percent,medium_percent,fast_percent");
+                  "mean_free_time,slow_percent,medium_percent,fast_percent,enskog_rate (Enskog's rate for the "
+                  "interval, docs/kinetic-theory.md)");
   cmd->add_option("--plot", opt->plot, "draw collisions per disk, rate and speed classes into FILE.png or FILE.svg");
   return [opt] { return run_collisions(*opt); };
 }

@@ -97,11 +97,17 @@ void report(const Run& r) {
     std::printf("  %-15s <E> from %s to %s\n", s.species_names[sp].c_str(), brief(s.species_mean_energy(sp, 0)).c_str(),
                 brief(s.species_mean_energy(sp, last)).c_str());
   if (c.restitution == 1) std::printf("  conservation    max |E(t)/E(0) - 1| = %s\n", brief(c.max_drift()).c_str());
-  if (!std::isnan(c.haff_tau))
-    std::printf("  Haff's law      tau = %s (initial collision frequency from the first %s collisions per disk); "
+  if (std::isfinite(c.enskog_tau))
+    std::printf("  Haff's law      tau = %s +- %s from Enskog's rate at t = 0 (omega_E = %s per disk, not fitted); "
                 "at the end E/E(0) = %s against (1 + t/tau)^-2 = %s\n",
-                brief(c.haff_tau).c_str(), brief(c.haff_calibration).c_str(), end_ratio.c_str(),
-                brief(c.haff_ratio(last)).c_str());
+                brief(c.enskog_tau).c_str(), brief(c.enskog_tau_error).c_str(), brief(c.enskog_rate0).c_str(),
+                end_ratio.c_str(), brief(c.haff_ratio(last)).c_str());
+  else if (!c.enskog_note.empty())
+    std::printf("  Enskog          no reference: %s\n", c.enskog_note.c_str());
+  if (!std::isnan(c.haff_tau))
+    std::printf("  Haff's law      tau = %s from the first %s collisions per disk (a check on the above)%s\n",
+                brief(c.haff_tau).c_str(), brief(c.haff_calibration).c_str(),
+                std::isfinite(c.enskog_tau) ? "" : ("; at the end (1 + t/tau)^-2 = " + brief(c.haff_ratio(last))).c_str());
 }
 
 Result<Run> measure(const EnergyOptions& opt, const std::string& path) {

@@ -18,7 +18,7 @@ namespace ede::stats_tool {
 namespace {
 
 struct SpeciesOptions {
-  std::string log, at, species, output, plot;
+  std::string log, at, species, output, plot, average;
   std::optional<double> every;
 };
 
@@ -59,11 +59,34 @@ Result<std::vector<double>> times_of(const SpeciesOptions& opt, const OpenedLog&
   return times;
 }
 
+// --time-average FROM:TO (either may be empty: 0, the end): species_time_averages (ede/kinetic_theory.hpp).
+int run_time_average(const SpeciesOptions& opt, const OpenedLog& o) {
+  const std::size_t colon = opt.average.find(':');
+  if (colon == std::string::npos) return usage_error("species: --time-average takes FROM:TO, e.g. 1:5 or 1: (to the end)");
+  auto from = read_analysis_time(o, opt.average.substr(0, colon), "--time-average FROM", "0");
+  if (!from) return fail(from.error().message);
+  auto to = read_analysis_time(o, opt.average.substr(colon + 1), "--time-average TO", "end");
+  if (!to) return fail(to.error().message);
+  auto rows = species_time_averages(o.log, from.value(), to.value());
+  if (!rows) return fail(rows.error().message);
+  std::printf("time average over t = %s to %s (2000 times, error from 20 blocks)\n", brief(from.value()).c_str(),
+              brief(to.value()).c_str());
+  std::printf("  %-14s %10s %16s %13s\n", "species", "N", "<m v^2/2> = kT", "+- error");
+  std::string csv = "species,n,mean_kinetic_energy,error\n";
+  for (const SpeciesTimeAverage& a : rows.value()) {
+    std::printf("  %-14s %10llu %16s %13s\n", a.name.c_str(), static_cast<unsigned long long>(a.n),
+                brief(a.mean_kinetic_energy).c_str(), brief(a.error).c_str());
+    csv += a.name + "," + std::to_string(a.n) + "," + exact(a.mean_kinetic_energy) + "," + exact(a.error) + "\n";
+  }
+  return write_csv_and_plot({.output = opt.output, .plot = "", .csv = csv, .script = "", .args = {}, .figure_label = ""});
+}
+
 int run_species(const SpeciesOptions& opt) {
   if (opt.every && !(*opt.every > 0)) return usage_error("species: --every must be > 0");
   auto opened = open_log_overview(opt.log);
   if (!opened) return fail(opened.error().message);
   const OpenedLog& o = opened.value();
+  if (!opt.average.empty()) return run_time_average(opt, o);
   auto species = read_species(o.log, opt.species);
   if (!species) return fail(species.error().message);
   auto times = times_of(opt, o);
@@ -95,6 +118,10 @@ Command add_species_command(CLI::App& app) {
   auto* at = cmd->add_option("--at", opt->at, "time T (exact in the log's scalar type), or 'end' (the default)");
   auto* every = cmd->add_option("--every", opt->every, "at 0, DT, 2 DT, ... and the end");
   at->excludes(every);
+  auto* average = cmd->add_option("--time-average", opt->average,
+                                  "FROM:TO: the time average of <m v^2/2> per species over [FROM, TO] (either may be "
+                                  "empty: 0, the end), with a block-average error; -o writes species,n,mean_kinetic_energy,error");
+  average->excludes(at)->excludes(every);
   cmd->add_option("--species", opt->species, "only this species (default: every species, then all disks)");
   cmd->add_option("-o,--output", opt->output,
                   "write CSV: time,species,n,mass_min,mass_max,mean_speed,mean_kinetic_energy,kT,"

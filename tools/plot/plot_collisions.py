@@ -2,7 +2,8 @@
 
 Usage: plot_collisions.py COLLISIONS.csv OUT.png|svg
 Three panels sharing the time axis: pair collisions per disk; the collision rate per disk (and its
-inverse, the mean free time, on the right axis); the speed classes slow / medium / fast in percent.
+inverse, the mean free time, on the right axis) with Enskog's rate for each interval (dotted, when the
+CSV has it: equal disks); the speed classes slow / medium / fast in percent.
 """
 import csv
 import sys
@@ -25,6 +26,9 @@ def main(path, out):
     ax0.plot(t, c["collisions_per_particle"], color=style.COLOURS[0])
     ax0.set_ylabel("collisions per disk")
     ax1.plot(t, c["collision_rate"], color=style.COLOURS[0], label="rate")
+    if "enskog_rate" in c and any(v == v for v in c["enskog_rate"]):
+        ax1.plot(t, c["enskog_rate"], color=style.COLOURS[2], linestyle=":", label="Enskog 2nσg(σ)√(πkT/m)")
+        ax1.legend(fontsize=8, loc="lower right")
     ax1.set_ylabel("collision rate [1/T]")
     right = ax1.twinx()
     right.plot(t, c["mean_free_time"], color=style.COLOURS[1], linestyle="--", label="mean free time")

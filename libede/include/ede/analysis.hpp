@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "ede/error.hpp"
+#include "ede/kinetic_theory.hpp"
 #include "ede/log.hpp"
 
 namespace ede {
@@ -362,9 +363,16 @@ struct EnergyCurve {
   double initial_energy = 0;                                // E(0)
   double haff_tau = std::numeric_limits<double>::quiet_NaN();  // Haff's cooling time; NaN if elastic
   double haff_calibration = 0;                              // C1: the collisions per disk omega0 came from
+  // Haff's tau from Enskog's collision rate at t = 0 (ede/kinetic_theory.hpp), computed before looking at
+  // the curve, with its stated uncertainty; NaN if elastic or not applicable (a mixture: see enskog_note).
+  // haff_ratio uses it when it is finite, else haff_tau.
+  double enskog_tau = std::numeric_limits<double>::quiet_NaN();
+  double enskog_tau_error = std::numeric_limits<double>::quiet_NaN();
+  double enskog_rate0 = std::numeric_limits<double>::quiet_NaN();  // omega_E(0) per disk
+  std::string enskog_note;                                  // why there is no enskog_tau
 
   double ratio(std::size_t k) const;       // E(t_k) / E(0); NaN if E(0) = 0
-  double haff_ratio(std::size_t k) const;  // (1 + t_k / tau)^-2; NaN without tau
+  double haff_ratio(std::size_t k) const;  // (1 + t_k / tau)^-2 (tau: enskog_tau, else haff_tau); NaN without
   double max_drift() const;                // max over the grid of |E / E(0) - 1| (0 if E(0) = 0)
 };
 
@@ -382,6 +390,10 @@ struct CollisionSeries {
   double reference_speed = 0;
   std::vector<SpeedClasses> classes;
   std::vector<double> rate, mean_free_time;
+  // Enskog's rate per disk for each interval (the mean of omega_E at its ends; NaN where rate is, or for
+  // a mixture) and the reference at the first time (ede/kinetic_theory.hpp).
+  std::vector<double> enskog_rate;
+  EnskogReference enskog;
 };
 Result<CollisionSeries> collision_series(const Log& log, const std::vector<double>& times);
 

@@ -19,6 +19,7 @@
 #include "ede/crater.hpp"
 #include "ede/error.hpp"
 #include "ede/events.hpp"
+#include "ede/kinetic_theory.hpp"
 #include "ede/log.hpp"
 #include "ede/pressure.hpp"
 #include "ede/scene.hpp"

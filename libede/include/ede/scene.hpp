@@ -122,6 +122,22 @@ struct LogSpec {  // how ede-sim -o writes the event log; never changes the simu
   std::optional<int> compression_level;            // zstd level
 };
 
+// [start]: the disks come from a state instead of [[species]] (setup/setup_from_csv.hpp, run/run_start.hpp):
+// an event log at a time (`from`, `at`), or a CSV state in the format ede-replay --at writes (`csv`). The
+// run starts at t = 0 from that state, in this scene's box and physics. On start the run records where it
+// came from in its own scene text (so in its log): `at` (the log's end when not given) and `digest`, the
+// source log's content digest (Log::content_digest) or an XXH3-128 of the CSV file's bytes; a digest
+// already given must match, so a rerun (verify, resume) from a changed source is refused.
+// Relative paths are relative to the scene file's folder (the working folder for scene text).
+struct StartSpec {
+  std::string from;            // an event log (.ede)
+  std::optional<double> at;    // the time in that log (default: its end)
+  std::string csv;             // or a CSV state (exactly one of from and csv)
+  std::string digest;          // "xxh3-128:..." of the source; recorded on start when empty
+  bool zero_momentum = false;  // subtract the centre-of-mass velocity from every disk
+  bool reverse_velocities = false;  // v -> -v for every disk (after zero_momentum)
+};
+
 struct Scene {
   std::string source_name;   // file name (or "<text>") for messages
   std::string source_text;   // the effective scene as TOML, after --set overrides: what was run
@@ -134,7 +150,8 @@ struct Scene {
   // resumed from bit for bit. Part of the run's definition (it changes round-off); 0 = automatic.
   std::uint64_t rebuild_interval = 0;
   LogSpec log;
-  std::vector<SpeciesSpec> species;
+  std::vector<SpeciesSpec> species;  // empty when the scene has a [start]
+  std::optional<StartSpec> start;
   StopSpec stop;
   std::optional<double> sample_interval;  // observers see the exact state at k * interval, k = 1, 2, ...
   std::vector<ActionSpec> actions;        // sorted by time

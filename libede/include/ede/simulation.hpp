@@ -20,6 +20,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -141,6 +142,14 @@ std::uint64_t peak_rss_bytes();
 // it starts, with the number in the message.
 inline constexpr std::uint64_t kBytesPerDiskWithLog = 400, kBytesPerDiskNoLog = 300;
 std::uint64_t estimated_memory_bytes(const Scene& scene, bool with_log);
+
+// The scene that continues the run logged in `log_path` from its state at time `at` (default: the log's
+// end): the log's own scene with its [[species]] and [[actions]] replaced by [start] from = the log's
+// absolute path, then `overrides` (e.g. physics.restitution=0.9, physics.gravity=[0,-1],
+// start.reverse_velocities=true, stop.time=2). The run it makes starts at t = 0 and records the source
+// log's content digest and the time in its own scene text (so in its log). ede-sim --continue uses it.
+Result<Scene> continuation_scene(const std::string& log_path, std::optional<double> at = std::nullopt,
+                                 const std::vector<Override>& overrides = {});
 
 // Doubts about a valid scene (a run that may take very long, ...): one sentence each, naming the file, the
 // key and what would be faster. The tools print them as warnings and go on. Empty for most scenes.

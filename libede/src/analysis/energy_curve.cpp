@@ -12,6 +12,7 @@
 
 #include "core/number_text.hpp"
 #include "ede/analysis.hpp"
+#include "ede/kinetic_theory.hpp"
 
 namespace ede {
 
@@ -68,7 +69,7 @@ double EnergyCurve::ratio(std::size_t k) const {
 }
 
 double EnergyCurve::haff_ratio(std::size_t k) const {
-  const double x = 1 + series.time[k] / haff_tau;
+  const double x = 1 + series.time[k] / (std::isfinite(enskog_tau) ? enskog_tau : haff_tau);
   return 1 / (x * x);
 }
 
@@ -101,6 +102,17 @@ Result<EnergyCurve> energy_curve(const Log& log, const EnergyCurveRequest& reque
   c.series = std::move(series).value();
   c.initial_energy = c.series.kinetic_energy.front();
   haff_time(c);
+  if (c.restitution < 1) {
+    auto e = enskog_at(log, 0);
+    if (!e) return e.error();
+    if (e.value().applicable && e.value().rate > 0) {
+      c.enskog_rate0 = e.value().rate;
+      c.enskog_tau = haff_tau(c.restitution, c.enskog_rate0);
+      c.enskog_tau_error = kHaffTauRelativeUncertainty * c.enskog_tau;
+    } else {
+      c.enskog_note = e.value().applicable ? "the disks are at rest at t = 0" : e.value().why_not;
+    }
+  }
   if (!from_zero) drop_first(c.series);
   return c;
 }

@@ -202,12 +202,28 @@ struct Rerun {
   EngineOptions options;
 };
 
+Result<InitialState> initial_state_from_log(const std::string& path) {
+  auto log = Log::open(path);
+  if (!log) return log.error();
+  auto s = log.value().state_at_event(0);
+  if (!s) return s.error();
+  const State& st = s.value();
+  InitialState init;
+  init.lx = st.lx, init.ly = st.ly;
+  init.species_names = st.species_names;
+  for (std::size_t i = 0; i < st.size(); ++i)
+    init.add(st.x[i], st.y[i], st.vx[i], st.vy[i], st.radius[i], st.mass[i], st.species[i]);
+  return init;
+}
+
 // The run the header describes, set up again; refused if it cannot be the logged run.
 Result<Rerun> prepare_rerun(const LogReader& log) {
   const LogHeaderInfo& h = log.header();
   auto scene = parse_scene_text(h.scene_text, h.scene_name);
   if (!scene) return Error{log.path() + ": the scene in the log's header does not load: " + scene.error().message};
-  auto initial = build_initial_state(scene.value());
+  // A run that started from a state ([start]) is rerun from the state its log starts with (the header's
+  // disks and first keyframe): the source log or CSV is not needed to verify the log.
+  auto initial = scene.value().start ? initial_state_from_log(log.path()) : build_initial_state(scene.value());
   if (!initial)
     return Error{log.path() + ": the scene in the log's header cannot be set up: " + initial.error().message};
   Rerun r{scene.value(), std::move(initial).value(), {}};

@@ -5,11 +5,21 @@
 
 #include "replay/replay.hpp"
 #include "run/run_checks.hpp"
+#include "run/run_start.hpp"
 #include "setup/setup.hpp"
 
 namespace ede {
 
 Result<RunSetup> setup_new_run(const Scene& scene) {
+  if (scene.start) {
+    auto started = start_from_state(scene);
+    if (!started) return started.error();
+    StartedRun& s = started.value();
+    if (Status c = check_run_can_finish(s.scene, s.initial); !c) return c.error();
+    RunSetup r{std::move(s.scene), std::move(s.initial), {}, nullptr};
+    r.options = engine_options_from(r.scene, r.initial.size());
+    return r;
+  }
   auto initial = build_initial_state(scene);
   if (!initial) return initial.error();
   if (Status s = check_run_can_finish(scene, initial.value()); !s) return s.error();

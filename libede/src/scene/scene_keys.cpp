@@ -17,7 +17,7 @@ namespace ede::scene_detail {
 namespace {
 
 constexpr std::string_view kRootKeys[] = {"seed", "box",  "physics",  "engine", "log",
-                                          "species", "stop", "sampling", "actions"};
+                                          "species", "stop", "sampling", "actions", "start"};
 constexpr std::string_view kBoxKeys[] = {"size", "boundary"};
 constexpr std::string_view kPhysicsKeys[] = {"restitution", "wall_restitution", "tc", "gravity", "pairs"};
 constexpr std::string_view kWallRestitutionKeys[] = {"left", "right", "bottom", "top"};
@@ -32,6 +32,7 @@ constexpr std::string_view kVelocityKeys[] = {"kind", "speed", "vector", "temper
 constexpr std::string_view kStopKeys[] = {"time", "events", "collisions_per_particle", "energy_fraction"};
 constexpr std::string_view kSamplingKeys[] = {"interval"};
 constexpr std::string_view kActionKeys[] = {"time", "kind"};
+constexpr std::string_view kStartKeys[] = {"from", "at", "csv", "digest", "zero_momentum", "reverse_velocities"};
 
 }  // namespace
 
@@ -50,6 +51,7 @@ const Section velocity{"[species.velocity]", kVelocityKeys};
 const Section stop{"[stop]", kStopKeys};
 const Section sampling{"[sampling]", kSamplingKeys};
 const Section action{"[[actions]]", kActionKeys};
+const Section start{"[start]", kStartKeys};
 }  // namespace sections
 
 namespace {
@@ -59,7 +61,7 @@ const Section* const kAllSections[] = {&sections::root,      &sections::box,    
                                        &sections::engine,    &sections::log,      &sections::species,
                                        &sections::radius,
                                        &sections::placement, &sections::velocity, &sections::stop,
-                                       &sections::sampling,  &sections::action};
+                                       &sections::sampling,  &sections::action, &sections::start};
 
 bool contains(std::span<const std::string_view> list, std::string_view word) {
   return std::find(list.begin(), list.end(), word) != list.end();
@@ -189,7 +191,7 @@ const Section* section_for(std::string_view key) {  // the section of the table 
       {"pairs", &sections::pair},
       {"species", &sections::species},   {"radius", &sections::radius},   {"placement", &sections::placement},
       {"velocity", &sections::velocity}, {"stop", &sections::stop},       {"sampling", &sections::sampling},
-      {"actions", &sections::action}};
+      {"actions", &sections::action},    {"start", &sections::start}};
   for (const auto& [name, section] : kTables) {
     if (name == key) return section;
   }

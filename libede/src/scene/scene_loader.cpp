@@ -16,6 +16,7 @@
 #include "scene/scene_keys.hpp"
 #include "scene/scene_label.hpp"
 #include "scene/scene_override.hpp"
+#include "scene/scene_start.hpp"
 
 namespace ede {
 namespace {
@@ -459,7 +460,7 @@ bool elastic_in_effect(const Scene& scene) {
 // everything would fall forever) and cannot stop on kinetic energy (it changes between collisions).
 void check_physics(const Reader& top, const Scene& scene) {
   const Reader p = top.section("physics");
-  for (const PairRestitution& pair : scene.physics.pairs)
+  for (const PairRestitution& pair : scene.start ? std::vector<PairRestitution>{} : scene.physics.pairs)
     for (const std::string& name : {pair.a, pair.b}) {
       bool found = false;
       for (const SpeciesSpec& sp : scene.species) found = found || sp.name == name;
@@ -493,7 +494,8 @@ Scene scene_from_tree(const toml::table& root, const Origin& origin) {
   scene.physics = read_physics(top);
   read_engine(top, scene);
   scene.log = read_log(top);
-  read_all_species(top, scene);
+  scene.start = read_start(top);
+  if (!scene.start) read_all_species(top, scene);
   scene.stop = read_stop(top);
   scene.sample_interval = read_sampling(top);
   scene.actions = read_actions(top);

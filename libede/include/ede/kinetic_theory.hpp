@@ -1,0 +1,84 @@
+// Reference laws of kinetic theory for hard disks, and their values for a log: the temperature in the
+// centre-of-mass frame, the contact value g(sigma), the Enskog collision rate, Haff's cooling time from it,
+// and time averages per species.
+//
+// Conventions (2D, k = 1). Temperature: kT = K' / f with f quadratic-degree-of-freedom pairs: in a periodic
+// box the total momentum P is conserved and carries no heat, so K' = K - P^2 / (2M) (the kinetic energy in
+// the centre-of-mass frame) over N - 1 disks' worth of degrees of freedom, 2(N - 1) quadratic ones of kT/2
+// each: kT = K' / (N - 1). In a walled box the walls exchange momentum, the box is the rest frame and
+// kT = K / N. Density: n = N / A, A = Lx Ly, phi = sum pi r^2 / A (the bulk; walls change the rate near
+// them by O(sigma / L)). Contact value: Henderson's g(sigma) = (1 - 7 phi / 16) / (1 - phi)^2, the value
+// that makes Z = 1 + 2 phi g(sigma) his equation of state (ede/pressure.hpp henderson_z). Kolafa and
+// Rottner's more accurate equation of state (Mol. Phys. 104, 3435 (2006)) is not in the project: its
+// coefficients must be taken from the paper and tested against its tables (docs/kinetic-theory.md).
+// Enskog's collision rate per disk: omega_E = 2 n sigma g(sigma) sqrt(pi kT / m), exact in equilibrium given
+// the exact g(sigma) (velocities are Maxwellian and independent of positions), so its error is g's:
+// Henderson's is within ~1% of simulations for phi <= 0.5. Equal disks only: a mixture needs g_ij per pair
+// of species, and the functions of a log say "not applicable" for one.
+// Haff's law E(t)/E(0) = (1 + t/tau)^-2 with tau = 4 / ((1 - xi^2) omega_E(0)), omega_E at the start: not
+// fitted. Its stated relative uncertainty, kHaffTauRelativeUncertainty = 10%: measured, the cooling is
+// slower than this tau says by 6-8% (xi = 0.9, phi = 0.2, N = 2000, three seeds, at every t up to 2 tau):
+// a start of one speed for every disk dissipates 11% less per collision than Maxwell's distribution until
+// a few collisions mix it, and the homogeneous cooling state's velocity correlations and non-Gaussian
+// tail lower the dissipation further; g(sigma) adds ~1%. tests/analysis/test_kinetic_theory.cpp checks it.
+// Rejected: fitting tau or omega to the curve (the answer would depend on the range; a reference law must
+// be computed before looking at the data it is compared with).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "ede/error.hpp"
+#include "ede/log.hpp"
+#include "ede/state.hpp"
+
+namespace ede {
+
+inline constexpr double kHaffTauRelativeUncertainty = 0.10;
+
+// g(sigma) of the hard-disk fluid from Henderson's equation of state.
+double henderson_contact_value(double phi);
+// omega_E = 2 n sigma g sqrt(pi kT / m) per disk.
+double enskog_collision_rate(double number_density, double sigma, double g_contact, double kT, double mass);
+// tau = 4 / ((1 - xi^2) omega0); infinity for xi = 1.
+double haff_tau(double restitution, double omega0);
+
+struct Temperature {
+  double kinetic = 0;     // K = sum m v^2 / 2
+  double kinetic_cm = 0;  // K - P^2 / 2M (periodic), K (walls)
+  double px = 0, py = 0;  // total momentum
+  double degrees = 0;     // N - 1 (periodic) or N (walls): kT = kinetic_cm / degrees
+  double kT = 0;
+};
+Temperature temperature_of(const State& s);
+
+// The Enskog reference of one state.
+struct EnskogReference {
+  bool applicable = false;     // equal radii and masses
+  std::string why_not;         // when not
+  double number_density = 0;   // N / (Lx Ly)
+  double packing_fraction = 0;
+  double sigma = 0, mass = 0;  // diameter and mass of the disks
+  double g_contact = 0;        // Henderson
+  Temperature temperature;
+  double rate = 0;             // omega_E per disk
+};
+EnskogReference enskog_reference(const State& s);
+
+// The log's state at t through enskog_reference.
+Result<EnskogReference> enskog_at(const Log& log, double t);
+
+// Per species, the time average of the mean kinetic energy per disk <m v^2 / 2> over [from, to] on an
+// evenly spaced grid of `points` times (log_series: one walk of the events), with the standard error of the
+// mean over `blocks` equal blocks of the grid (correlations within a block are absorbed; blocks shorter than
+// the energy's correlation time make the error too small). Last row: every disk ("all").
+struct SpeciesTimeAverage {
+  std::string name;
+  std::uint64_t n = 0;
+  double mean_kinetic_energy = 0, error = 0;  // per disk, = kT of the species by equipartition
+};
+Result<std::vector<SpeciesTimeAverage>> species_time_averages(const Log& log, double from, double to,
+                                                              std::size_t points = 2000, std::size_t blocks = 20);
+
+}  // namespace ede

@@ -1,0 +1,151 @@
+// start_from_state; see run_start.hpp.
+#include "run/run_start.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "core/xxh3.hpp"
+#include "ede/log.hpp"
+#include "setup/setup.hpp"
+#include "setup/setup_from_csv.hpp"
+
+namespace ede {
+
+namespace {
+
+std::string exact_double(double v) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.17g", v);
+  return text;
+}
+
+InitialState initial_of(const State& s) {
+  InitialState st;
+  st.species_names = s.species_names;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    st.add(s.x[i], s.y[i], s.vx[i], s.vy[i], s.radius[i], s.mass[i], s.species[i]);
+  return st;
+}
+
+struct Source {
+  InitialState initial;
+  std::string digest;
+  double at = 0;
+};
+
+Result<Source> from_log(const StartSpec& start, const std::string& path, const std::string& scene_name) {
+  auto log = Log::open(path);
+  if (!log) return Error{scene_name + ": start.from: " + log.error().message, log.error().kind};
+  const LogInfo& info = log.value().info();
+  Source src;
+  if (start.at) {
+    if (!(Time(*start.at) >= Time(info.start_time) && Time(*start.at) <= info.end_time))
+      return Error{scene_name + ": error: start.at = " + exact_double(*start.at) + " is outside the log " + path +
+                   " (it runs from " + exact_double(info.start_time) + " to " + exact_double(double(info.end_time)) +
+                   "). Fix: give a time within the log, or leave start.at out to start from its end."};
+    auto s = log.value().state_at(Time(*start.at));
+    if (!s) return s.error();
+    src.initial = initial_of(s.value());
+    src.at = *start.at;
+  } else {
+    auto s = log.value().state_at_end();
+    if (!s) return s.error();
+    src.initial = initial_of(s.value());
+    src.at = double(s.value().time);
+  }
+  auto digest = log.value().content_digest();
+  if (!digest) return digest.error();
+  src.digest = digest.value();
+  return src;
+}
+
+Result<Source> from_csv(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    return Error{path + ": error: cannot read the CSV state (start.csv). Fix: check the path (relative paths are "
+                        "relative to the scene file's folder).",
+                 ErrorKind::Io};
+  std::ostringstream text;
+  text << in.rdbuf();
+  const std::string bytes = text.str();
+  auto st = parse_state_csv(bytes, path);
+  if (!st) return st.error();
+  Xxh3Hash h;
+  h.update(bytes.data(), bytes.size());
+  return Source{std::move(st).value(), "xxh3-128:" + h.hex(), 0};
+}
+
+// v -> v - P/M (the centre-of-mass velocity), sums in long double; then v -> -v if asked.
+void adjust_velocities(const StartSpec& start, InitialState& st) {
+  if (start.zero_momentum) {
+    long double px = 0, py = 0, m = 0;
+    for (std::size_t i = 0; i < st.size(); ++i) {
+      px += (long double)st.mass[i] * st.vx[i];
+      py += (long double)st.mass[i] * st.vy[i];
+      m += st.mass[i];
+    }
+    const double ux = double(px / m), uy = double(py / m);
+    for (std::size_t i = 0; i < st.size(); ++i) st.vx[i] -= ux, st.vy[i] -= uy;
+  }
+  if (start.reverse_velocities)
+    for (std::size_t i = 0; i < st.size(); ++i) st.vx[i] = -st.vx[i], st.vy[i] = -st.vy[i];
+}
+
+Status check_pair_names(const Scene& scene, const InitialState& st) {
+  for (const PairRestitution& p : scene.physics.pairs)
+    for (const std::string& name : {p.a, p.b}) {
+      bool found = false;
+      for (const std::string& s : st.species_names) found = found || s == name;
+      if (found) continue;
+      std::string known;
+      for (const std::string& s : st.species_names) known += (known.empty() ? "" : ", ") + s;
+      return Error{scene.source_name + ": error: physics.pairs: there is no species '" + name +
+                   "' in the starting state. Fix: use the names of its species: " + known + "."};
+    }
+  return Ok{};
+}
+
+}  // namespace
+
+std::string resolve_start_path(const std::string& path, const std::string& scene_source_name) {
+  const std::filesystem::path p(path);
+  if (p.is_absolute() || scene_source_name.empty() || scene_source_name.front() == '<') return path;
+  const std::filesystem::path dir = std::filesystem::path(scene_source_name).parent_path();
+  return dir.empty() ? path : (dir / p).string();
+}
+
+Result<StartedRun> start_from_state(const Scene& scene) {
+  const StartSpec& start = *scene.start;
+  const bool is_log = !start.from.empty();
+  const std::string path = resolve_start_path(is_log ? start.from : start.csv, scene.source_name);
+  auto src = is_log ? from_log(start, path, scene.source_name) : from_csv(path);
+  if (!src) return src.error();
+  if (!start.digest.empty() && start.digest != src.value().digest)
+    return Error{scene.source_name + ": error: start.digest = " + start.digest + " but " + path + " has " +
+                 src.value().digest + ": it is not the source this run started from (changed or replaced). Fix: "
+                 "give the original file (--set start." + (is_log ? "from" : "csv") +
+                 "=PATH), or remove start.digest to start from this one as a new run."};
+  StartedRun run;
+  run.initial = std::move(src.value().initial);
+  run.initial.lx = scene.lx;
+  run.initial.ly = scene.ly;
+  adjust_velocities(start, run.initial);
+  if (Status s = check_pair_names(scene, run.initial); !s) return s.error();
+  if (Status s = check_initial_state(run.initial, scene.boundary, scene.source_name + " (start from " + path + ")"); !s)
+    return s.error();
+  std::vector<Override> record;
+  if (start.digest.empty()) record.push_back({"start.digest=\"" + src.value().digest + "\""});
+  if (is_log && !start.at) record.push_back({"start.at=" + exact_double(src.value().at)});
+  if (record.empty()) {
+    run.scene = scene;
+    return run;
+  }
+  auto recorded = parse_scene_text(scene.source_text, scene.source_name, record);
+  if (!recorded) return recorded.error();
+  run.scene = std::move(recorded).value();
+  return run;
+}
+
+}  // namespace ede
