@@ -105,7 +105,7 @@ void bind_structure(py::module_& m) {
     return d;
   });
   m.def("enskog_diffusion", &enskog_diffusion);
-  m.def("henderson_contact", &henderson_contact);
+  m.def("henderson_contact", &henderson_contact_value);
 }
 
 }  // namespace ede::python

@@ -7,6 +7,7 @@
 
 #include "ede/log.hpp"
 #include "ede/structure.hpp"
+#include "ede/kinetic_theory.hpp"
 #include "ede/transport.hpp"
 #include "log_test_support.hpp"
 
@@ -115,7 +116,7 @@ TEST_CASE("a dilute periodic gas: g(sigma) three ways agree, and D is Enskog's w
   FrameTimes f;
   f.from = 5, f.to = 60, f.frames = 200;
   const ContactValues c = contact_values(log, f, 0.1, 8).value();
-  const double g_h = henderson_contact(phi);
+  const double g_h = henderson_contact_value(phi);
   INFO("g(sigma): Henderson " << g_h << ", from g(r) " << c.from_gr.value << " +- " << c.from_gr.error
                               << ", from collisions " << c.from_collisions.value << " +- " << c.from_collisions.error
                               << ", from pressure " << c.from_pressure.value << " +- " << c.from_pressure.error);

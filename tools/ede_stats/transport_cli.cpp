@@ -58,7 +58,7 @@ double enskog_of(const Log& log, double& kT_out) {
   const double n = double(st.size()) / (st.lx * st.ly), sigma = 2 * st.radius[0];
   const double phi = n * M_PI * sigma * sigma / 4;
   kT_out = k / double(st.size());
-  return enskog_diffusion(n, sigma, henderson_contact(phi), kT_out, st.mass[0]);
+  return enskog_diffusion(n, sigma, henderson_contact_value(phi), kT_out, st.mass[0]);
 }
 
 int run_msd(const TransportCli& c) {

@@ -41,6 +41,9 @@ inline constexpr double kHaffTauRelativeUncertainty = 0.10;
 double henderson_contact_value(double phi);
 // omega_E = 2 n sigma g sqrt(pi kT / m) per disk.
 double enskog_collision_rate(double number_density, double sigma, double g_contact, double kT, double mass);
+// Enskog's self-diffusion coefficient of hard disks (first Sonine approximation; Gass, J. Chem. Phys. 54,
+// 1898 (1971)): D_E = (1 / (2 n sigma g(sigma))) sqrt(kT / (pi m)) = kT / (m omega_E).
+double enskog_diffusion(double number_density, double sigma, double g_contact, double kT, double mass);
 // tau = 4 / ((1 - xi^2) omega0); infinity for xi = 1.
 double haff_tau(double restitution, double omega0);
 

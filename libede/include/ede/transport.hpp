@@ -50,11 +50,6 @@ struct VelocityAutocorrelation {
 };
 Result<VelocityAutocorrelation> velocity_autocorrelation(const Log& log, const TransportOptions& o);
 
-// Enskog's self-diffusion coefficient of hard disks (first Sonine approximation; Gass, J. Chem. Phys. 54,
-// 1898 (1971)): D_E = (1 / (2 n sigma g(sigma))) sqrt(kT / (pi m)).
-double enskog_diffusion(double n, double sigma, double g_contact, double kT, double mass);
-// Henderson's contact value of hard disks, g(sigma) = (1 - 7 phi / 16) / (1 - phi)^2 (consistent with
-// henderson_z through Z = 1 + 2 phi g(sigma)).
-double henderson_contact(double phi);
+// Enskog's self-diffusion coefficient and Henderson's contact value: ede/kinetic_theory.hpp.
 
 }  // namespace ede

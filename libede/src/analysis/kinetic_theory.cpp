@@ -11,6 +11,10 @@ namespace ede {
 
 double henderson_contact_value(double phi) { return (1 - 7 * phi / 16) / ((1 - phi) * (1 - phi)); }
 
+double enskog_diffusion(double n, double sigma, double g_contact, double kT, double mass) {
+  return 1 / (2 * n * sigma * g_contact) * std::sqrt(kT / (std::numbers::pi * mass));
+}
+
 double enskog_collision_rate(double n, double sigma, double g, double kT, double m) {
   return 2 * n * sigma * g * std::sqrt(std::numbers::pi * kT / m);
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "ede/kinetic_theory.hpp"
 #include "ede/pressure.hpp"
 #include "ede/structure.hpp"
 
@@ -35,7 +36,7 @@ Result<ContactValue> contact_from_gr(const PairCorrelation& g, double sigma, dou
 
 ContactValue contact_from_collision_rate(double rate, std::uint64_t pairs, double n, double sigma, double kT,
                                          double mass) {
-  const double g = rate / (2 * n * sigma * std::sqrt(M_PI * kT / mass));
+  const double g = rate / enskog_collision_rate(n, sigma, 1, kT, mass);  // omega_E is linear in g
   return ContactValue{g, pairs ? g / std::sqrt(double(pairs)) : NAN,
                       "Enskog collision frequency omega = 2 n sigma g(sigma) sqrt(pi kT / m) (Poisson error of the "
                       "collision count)"};
