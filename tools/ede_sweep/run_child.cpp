@@ -1,0 +1,76 @@
+// The child process of one run (see sweep.hpp): scene = base scene + the run's overrides, through the
+// library (load_scene_file), so a bad point fails exactly as `ede-sim --set` would and becomes a row with
+// that message. A log left by a killed process of the same run is resumed from its last resumable
+// keyframe (Simulation::resume: the finished log is byte-identical to an uninterrupted run's). The row
+// is written last, after the log is closed, measured and digested: its presence means the run is whole.
+#include <chrono>
+#include <filesystem>
+
+#include "ede/ede.hpp"
+#include "interrupt.hpp"
+#include "sweep.hpp"
+
+namespace ede::sweep {
+
+namespace {
+
+bool normal_end(RunStatus s) {
+  return s == RunStatus::ReachedTime || s == RunStatus::ReachedEvents || s == RunStatus::ReachedCollisions ||
+         s == RunStatus::ReachedEnergy || s == RunStatus::NoMoreEvents;
+}
+
+// A log an earlier, killed process of this very run left: resumable, and of the same scene.
+bool can_resume(const std::string& path, const Scene& scene) {
+  if (!std::filesystem::exists(path)) return false;
+  auto log = Log::open(path);
+  if (!log) return false;
+  const LogInfo& info = log.value().info();
+  return !info.complete && info.resumable_keyframes > 0 && info.scene_text == scene.source_text;
+}
+
+}  // namespace
+
+int run_child(const Sweep& s, std::size_t k) {
+  const auto start = std::chrono::steady_clock::now();
+  const PlannedRun& r = s.runs[k];
+  RunRow row;
+  row.index = r.index;
+  row.name = r.name;
+  row.overrides = r.overrides;
+  row.log = "runs/" + r.name + ".ede";
+  row.values.assign(s.spec.collect.size(), std::numeric_limits<double>::quiet_NaN());
+  const std::string path = log_path(s, r);
+  const auto finish = [&](const std::string& status, const std::string& error) {
+    row.status = status;
+    row.error = error;
+    row.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const Status w = write_row_file(row_path(s, r), row);
+    if (!w) std::fprintf(stderr, "ede-sweep: %s\n", w.error().message.c_str());
+    return w ? 0 : 1;
+  };
+  std::vector<Override> overrides;
+  for (const std::string& o : r.overrides) overrides.push_back({o});
+  auto scene = load_scene_file(s.spec.scene_path, overrides);
+  if (!scene) return finish("failed", scene.error().message);
+  auto sim = can_resume(path, scene.value()) ? Simulation::resume(path) : Simulation::create(scene.value(), {path, {}});
+  if (!sim) return finish("failed", sim.error().message);
+  RunStatus status;
+  {
+    tools::InterruptGuard guard(sim.value());
+    status = sim.value().run();
+  }
+  const Status closed = sim.value().close();
+  if (sim.value().interrupted()) return tools::InterruptGuard::exit_status();  // no row: the run is not whole
+  if (!closed) return finish("failed", closed.error().message);
+  auto log = Log::open(path);
+  if (!log) return finish("failed", log.error().message);
+  auto digest = log.value().content_digest();
+  if (!digest) return finish("failed", digest.error().message);
+  row.digest = digest.value();
+  auto values = collect_quantities(s.spec.collect, sim.value().summary(), log.value());
+  if (!values) return finish("failed", "measuring the log: " + values.error().message);
+  row.values = values.value();
+  return normal_end(status) ? finish("ok", "") : finish(to_string(status), sim.value().message());
+}
+
+}  // namespace ede::sweep

@@ -1,0 +1,75 @@
+// Row files as JSON (see run_row.hpp).
+#include "run_row.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace ede::sweep {
+
+std::string row_to_json(const RunRow& row) {
+  nlohmann::json j;
+  j["index"] = row.index;
+  j["name"] = row.name;
+  j["overrides"] = row.overrides;
+  nlohmann::json values = nlohmann::json::array();
+  for (double v : row.values) values.push_back(std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr));
+  j["values"] = values;
+  j["status"] = row.status;
+  j["error"] = row.error;
+  j["wall_seconds"] = row.wall_seconds;
+  j["log"] = row.log;
+  j["digest"] = row.digest;
+  if (row.reused) j["reused"] = true;  // for rank 0's report; never in a row file (the child writes those)
+  return j.dump();
+}
+
+Result<RunRow> row_from_json(const std::string& text, const std::string& where) {
+  try {
+    const nlohmann::json j = nlohmann::json::parse(text);
+    RunRow row;
+    row.index = j.at("index").get<std::size_t>();
+    row.name = j.at("name").get<std::string>();
+    row.overrides = j.at("overrides").get<std::vector<std::string>>();
+    for (const auto& v : j.at("values"))
+      row.values.push_back(v.is_null() ? std::numeric_limits<double>::quiet_NaN() : v.get<double>());
+    row.status = j.at("status").get<std::string>();
+    row.error = j.at("error").get<std::string>();
+    row.wall_seconds = j.at("wall_seconds").get<double>();
+    row.log = j.at("log").get<std::string>();
+    row.digest = j.at("digest").get<std::string>();
+    row.reused = j.value("reused", false);
+    return row;
+  } catch (const std::exception& e) {
+    return Error{where + ": not a sweep row (" + e.what() + "). Fix: delete it; the run is then done again"};
+  }
+}
+
+Status write_row_file(const std::string& path, const RunRow& row) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    out << row_to_json(row) << "\n";
+    if (!out.flush()) return Error{tmp + ": cannot write the run's row (disk full?)"};
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) return Error{path + ": cannot rename " + tmp + " to it"};
+  return Ok{};
+}
+
+Result<RunRow> read_row_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return Error{path + ": no row"};
+  std::stringstream s;
+  s << in.rdbuf();
+  return row_from_json(s.str(), path);
+}
+
+bool final_status(const std::string& status) {
+  return status != "failed" && status != "timeout" && status != "killed" && status != "crashed" &&
+         status != "interrupted";
+}
+
+}  // namespace ede::sweep
