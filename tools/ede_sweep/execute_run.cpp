@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "child_process.hpp"
+#include "number_text.hpp"
 #include "sweep.hpp"
 
 namespace ede::sweep {
@@ -50,6 +51,10 @@ RunRow execute_run(const Sweep& s, std::size_t k) {
   row.overrides = r.overrides;
   row.log = "runs/" + r.name + ".ede";
   row.values.assign(s.spec.collect.size(), std::numeric_limits<double>::quiet_NaN());
+  const auto no_log = [&](RunRow& out) {
+    if (!std::filesystem::exists(log_path(s, r))) out.log.clear();
+    return out;
+  };
   for (int attempt = 0; attempt <= s.spec.retries; ++attempt) {
     auto end = run_child_process(argv, err_path, s.spec.timeout);
     if (!end) {
@@ -69,8 +74,9 @@ RunRow execute_run(const Sweep& s, std::size_t k) {
       return row;
     }
     if (end.value().timed_out) {
+      no_log(row);
       row.status = "timeout";
-      row.error = "stopped after the sweep's timeout of " + std::to_string(s.spec.timeout) +
+      row.error = "stopped after the sweep's timeout of " + tools::brief(s.spec.timeout) +
                   " s (its log is kept: a rerun resumes it; raise timeout = ... to let it finish)";
       return row;  // a stalled run is not retried: it would stall again
     }
@@ -79,7 +85,7 @@ RunRow execute_run(const Sweep& s, std::size_t k) {
                 std::to_string(end.value().signalled ? end.value().exit_status - 128 : end.value().exit_status) +
                 " without a result (see " + err_path + ")";
   }
-  return row;
+  return no_log(row);
 }
 
 }  // namespace ede::sweep

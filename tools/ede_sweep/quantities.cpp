@@ -17,7 +17,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 const std::vector<std::string> kSummary = {"events",      "pair_collisions", "wall_collisions", "collisions_per_particle",
                                            "sim_time",    "energy_initial",  "energy_final",    "energy_ratio"};
-const std::vector<std::string> kPressure = {"z_virial", "z_wall", "virial", "wall", "kT", "packing_fraction"};
+const std::vector<std::string> kPressure = {"z_virial", "z_wall", "z_henderson", "virial", "wall", "kT", "packing_fraction"};
 
 struct Name {
   std::string family;  // summary, energy, collisions, crater, pressure
@@ -56,7 +56,7 @@ Result<Name> parse(const std::string& text) {
   for (const auto& s : kSummary) names += s + ", ";
   names += "energy@T, collisions@T, crater.M[@T] (M: ";
   for (const auto& s : crater_metric_names()) names += s + " ";
-  names += "), pressure.P[_error] (P: z_virial z_wall virial wall kT packing_fraction)";
+  names += "), pressure.P[_error] (P: z_virial z_wall z_henderson virial wall kT packing_fraction)";
   return Error{"collect: '" + text + "' is not a quantity. Known: " + names};
 }
 
@@ -76,6 +76,7 @@ double pressure_field(const PressureReport& r, const std::string& field) {
   const bool error = field.size() > 6 && field.compare(field.size() - 6, 6, "_error") == 0;
   const std::string f = error ? field.substr(0, field.size() - 6) : field;
   if (f == "packing_fraction") return error ? 0.0 : r.packing_fraction;
+  if (f == "z_henderson") return error ? 0.0 : henderson_z(r.packing_fraction);
   const PressureSeries* s = f == "z_virial" ? &r.z_virial : f == "virial" ? &r.virial : f == "kT" ? &r.kT
                             : f == "z_wall"  ? &r.z_wall
                                              : &r.wall_mean;

@@ -7,7 +7,8 @@
 //   energy@T (mean kinetic energy per disk at T), collisions@T (collisions per particle up to T)
 //   crater.METRIC or crater.METRIC@T (ede-crater's metrics: depth, width, area, ...; default time: when
 //            10% of the energy is left, as ede-crater measures)
-//   pressure.NAME (z_virial, z_wall, virial, wall, kT, packing_fraction; NAME_error its standard error)
+//   pressure.NAME (z_virial, z_wall, virial, wall, kT, packing_fraction, and z_henderson: Henderson's Z at the
+//            run's packing fraction; NAME_error the standard error over the blocks, ede-stats pressure's)
 // Names are checked before any run starts. Rejected: a plug-in list of quantity objects (the names map to
 // a handful of library calls; a table of functions per name would be longer than the switch).
 #pragma once

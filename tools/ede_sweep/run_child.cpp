@@ -3,7 +3,11 @@
 // that message. A log left by a killed process of the same run is resumed from its last resumable
 // keyframe (Simulation::resume: the finished log is byte-identical to an uninterrupted run's). The row
 // is written last, after the log is closed, measured and digested: its presence means the run is whole.
+#include <sys/prctl.h>
+#include <unistd.h>
+
 #include <chrono>
+#include <csignal>
 #include <filesystem>
 
 #include "ede/ede.hpp"
@@ -31,6 +35,11 @@ bool can_resume(const std::string& path, const Scene& scene) {
 }  // namespace
 
 int run_child(const Sweep& s, std::size_t k) {
+  // The run ends with the process that waits for it: a worker killed (kill -9, an MPI job aborted) leaves
+  // no orphan writing a log that the next execution of the sweep would resume (Linux: PR_SET_PDEATHSIG;
+  // SIGTERM stops the run at its next check with its log resumable).
+  prctl(PR_SET_PDEATHSIG, SIGTERM);
+  if (getppid() == 1) return 143;
   const auto start = std::chrono::steady_clock::now();
   const PlannedRun& r = s.runs[k];
   RunRow row;
@@ -43,6 +52,7 @@ int run_child(const Sweep& s, std::size_t k) {
   const auto finish = [&](const std::string& status, const std::string& error) {
     row.status = status;
     row.error = error;
+    if (!std::filesystem::exists(path)) row.log.clear();
     row.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const Status w = write_row_file(row_path(s, r), row);
     if (!w) std::fprintf(stderr, "ede-sweep: %s\n", w.error().message.c_str());
