@@ -81,7 +81,8 @@ Result<ChildEnd> run_child_process(const std::vector<std::string>& argv, const s
   bool termed = false;
   auto killed_at = start;
   for (;;) {
-    const pid_t w = waitpid(pid, &status, WNOHANG);
+    // Without a deadline the thread blocks in waitpid (no polling delay on a run's end); with one it polls.
+    const pid_t w = waitpid(pid, &status, timeout > 0 ? WNOHANG : 0);
     if (w == pid) break;
     if (w < 0 && errno != EINTR) {
       forget(slot);

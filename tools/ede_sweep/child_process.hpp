@@ -1,8 +1,9 @@
 // A run's own process: started with posix_spawn, waited for with a deadline.
 //
 // tools/common/spawn.hpp runs a program to its end; a sweep also needs a deadline (a stalled run is
-// stopped and recorded, not waited for forever), so this starts the child and polls waitpid(WNOHANG)
-// every few milliseconds until it ends or the deadline passes (then SIGTERM: the run stops at its next
+// stopped and recorded, not waited for forever), so this starts the child and, with a deadline, polls
+// waitpid(WNOHANG) every few milliseconds until it ends or the deadline passes (without one it blocks in
+// waitpid) (then SIGTERM: the run stops at its next
 // check and keeps a resumable log; SIGKILL a second later if it has not ended). The child's stderr goes to
 // a file beside its log, stdout to /dev/null. Rejected: fork in a threaded process (only async-signal-safe
 // calls are allowed in the child; posix_spawn does exactly the safe part) and a SIGCHLD handler (the pool's

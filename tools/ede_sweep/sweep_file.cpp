@@ -68,7 +68,7 @@ Result<std::vector<std::string>> range_values(const toml::table& r, const std::s
     const double f = *count == 1 ? 0.0 : double(k) / double(*count - 1);
     const double v = k == *count - 1 ? *to
                      : scale == "log" ? *from * std::pow(*to / *from, f)
-                                      : *from + (*to - *from) * f;
+                                      : (double(*count - 1 - k) * *from + double(k) * *to) / double(*count - 1);
     out.push_back(shortest(v));
   }
   return out;
