@@ -20,27 +20,32 @@ scene = "$src/examples/cooling.toml"
 set = ["species.grains.count=200", "stop.time=0.2"]
 seeds = $runs
 EOT
-now() { date +%s.%N; }
-rate() { awk -v n="$runs" -v t="$1" 'BEGIN { printf "%.0f runs/min (%.1f ms per run)", 60 * n / t, 1000 * t / n }'; }
+# measure NAME CMD...: wall and CPU (user + system, children included) seconds of CMD into $NAME_wall, $NAME_cpu.
+measure() {
+  local name=$1 t
+  shift
+  t=$( { TIMEFORMAT='%R %U %S'; time "$@" >/dev/null 2>&1; } 2>&1 | tail -1)
+  eval "${name}_wall=$(echo "$t" | awk '{ print $1 }')"
+  eval "${name}_cpu=$(echo "$t" | awk '{ print $2 + $3 }')"
+}
+rate() { awk -v n="$runs" -v t="$1" -v c="$2" 'BEGIN { printf "%5.0f runs/min (%5.1f ms wall, %5.1f ms CPU per run)", 60 * n / t, 1000 * t / n, 1000 * c / n }'; }
+sim_loop() {
+  mkdir -p "$T/sim"
+  for s in $(seq "$runs"); do
+    "$build/tools/ede-sim" "$src/examples/cooling.toml" --set species.grains.count=200 --set stop.time=0.2 --set seed="$s" \
+      -o "$T/sim/$s.ede" -q || return 1
+  done
+}
 
-t0=$(now); "$build/tools/ede-sweep" "$T/bench.toml" --out-dir "$T/j1" -j 1 -q >/dev/null; t1=$(now)
-j1=$(awk -v a="$t0" -v b="$t1" 'BEGIN { print b - a }')
-t0=$(now); "$build/tools/ede-sweep" "$T/bench.toml" --out-dir "$T/j2" -j 2 -q >/dev/null; t1=$(now)
-j2=$(awk -v a="$t0" -v b="$t1" 'BEGIN { print b - a }')
-t0=$(now); "$build/tools/ede-sweep" "$T/bench.toml" --out-dir "$T/j2" -j 2 -q >/dev/null; t1=$(now)
-rerun=$(awk -v a="$t0" -v b="$t1" 'BEGIN { print b - a }')
-mkdir -p "$T/sim"
-t0=$(now)
-for s in $(seq "$runs"); do
-  "$build/tools/ede-sim" "$src/examples/cooling.toml" --set species.grains.count=200 --set stop.time=0.2 --set seed="$s" \
-    -o "$T/sim/$s.ede" -q >/dev/null
-done
-t1=$(now)
-sim=$(awk -v a="$t0" -v b="$t1" 'BEGIN { print b - a }')
-
+measure sim sim_loop
+measure j1 "$build/tools/ede-sweep" "$T/bench.toml" --out-dir "$T/j1" -j 1 -q
+measure j2 "$build/tools/ede-sweep" "$T/bench.toml" --out-dir "$T/j2" -j 2 -q
+measure rerun "$build/tools/ede-sweep" "$T/bench.toml" --out-dir "$T/j2" -j 2 -q
 echo "ede-sweep, $runs short runs (200 disks, t = 0.2), measured under load on $(nproc) cores:"
-echo "  ede-sim loop (1 at a time):  $(rate "$sim")"
-echo "  ede-sweep -j 1:              $(rate "$j1")"
-echo "  ede-sweep -j 2:              $(rate "$j2")   scaling $(awk -v a="$j1" -v b="$j2" 'BEGIN { printf "%.2f", a / b }')x"
-echo "  rerun (all reused):          $(rate "$rerun")"
-echo "  overhead per run, -j 1 vs the ede-sim loop: $(awk -v a="$j1" -v b="$sim" -v n="$runs" 'BEGIN { printf "%.1f ms", 1000 * (a - b) / n }')"
+echo "  ede-sim loop (1 at a time): $(rate "$sim_wall" "$sim_cpu")"
+echo "  ede-sweep -j 1:             $(rate "$j1_wall" "$j1_cpu")"
+echo "  ede-sweep -j 2:             $(rate "$j2_wall" "$j2_cpu")"
+echo "  rerun (all reused):         $(rate "$rerun_wall" "$rerun_cpu")"
+echo "  scaling -j 2 / -j 1: $(awk -v a="$j1_wall" -v b="$j2_wall" 'BEGIN { printf "%.2f", a / b }')x;" \
+     "overhead per run of ede-sweep -j 1 against the ede-sim loop: $(awk -v a="$j1_wall" -v b="$sim_wall" -v n="$runs" 'BEGIN { printf "%.1f", 1000 * (a - b) / n }') ms wall," \
+     "$(awk -v a="$j1_cpu" -v b="$sim_cpu" -v n="$runs" 'BEGIN { printf "%.1f", 1000 * (a - b) / n }') ms CPU"
