@@ -18,6 +18,18 @@ namespace ede::sweep {
 
 namespace {
 
+// The status column's word for a run that ended abnormally (the error column gets the library's words and
+// remedy).
+std::string status_word(RunStatus s) {
+  switch (s) {
+    case RunStatus::Stalled: return "stalled";
+    case RunStatus::Collapsed: return "collapsed";
+    case RunStatus::CameToRest: return "came to rest";
+    case RunStatus::NonFinite: return "non-finite";
+    default: return to_string(s);
+  }
+}
+
 bool normal_end(RunStatus s) {
   return s == RunStatus::ReachedTime || s == RunStatus::ReachedEvents || s == RunStatus::ReachedCollisions ||
          s == RunStatus::ReachedEnergy || s == RunStatus::NoMoreEvents;
@@ -80,7 +92,8 @@ int run_child(const Sweep& s, std::size_t k) {
   auto values = collect_quantities(s.spec.collect, sim.value().summary(), log.value());
   if (!values) return finish("failed", "measuring the log: " + values.error().message);
   row.values = values.value();
-  return normal_end(status) ? finish("ok", "") : finish(to_string(status), sim.value().message());
+  return normal_end(status) ? finish("ok", "")
+                             : finish(status_word(status), std::string(to_string(status)) + ": " + sim.value().message());
 }
 
 }  // namespace ede::sweep
