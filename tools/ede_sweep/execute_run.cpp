@@ -18,7 +18,8 @@ std::string row_path(const Sweep& s, const PlannedRun& r) { return runs_dir(s) +
 std::optional<RunRow> reusable_row(const Sweep& s, const PlannedRun& r) {
   auto row = read_row_file(row_path(s, r));
   if (!row || row.value().overrides != r.overrides || !final_status(row.value().status) ||
-      row.value().values.size() != s.spec.collect.size() || row.value().digest.empty())
+      row.value().collect != s.spec.collect || row.value().values.size() != s.spec.collect.size() ||
+      row.value().digest.empty())
     return std::nullopt;
   auto log = Log::open(log_path(s, r));
   if (!log || !log.value().info().complete) return std::nullopt;
@@ -49,6 +50,7 @@ RunRow execute_run(const Sweep& s, std::size_t k) {
   row.index = r.index;
   row.name = r.name;
   row.overrides = r.overrides;
+  row.collect = s.spec.collect;
   row.log = "runs/" + r.name + ".ede";
   row.values.assign(s.spec.collect.size(), std::numeric_limits<double>::quiet_NaN());
   const auto no_log = [&](RunRow& out) {

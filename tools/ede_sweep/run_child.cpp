@@ -58,6 +58,7 @@ int run_child(const Sweep& s, std::size_t k) {
   row.index = r.index;
   row.name = r.name;
   row.overrides = r.overrides;
+  row.collect = s.spec.collect;
   row.log = "runs/" + r.name + ".ede";
   row.values.assign(s.spec.collect.size(), std::numeric_limits<double>::quiet_NaN());
   const std::string path = log_path(s, r);

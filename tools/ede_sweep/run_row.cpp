@@ -15,6 +15,7 @@ std::string row_to_json(const RunRow& row) {
   j["index"] = row.index;
   j["name"] = row.name;
   j["overrides"] = row.overrides;
+  j["collect"] = row.collect;
   nlohmann::json values = nlohmann::json::array();
   for (double v : row.values) values.push_back(std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr));
   j["values"] = values;
@@ -34,6 +35,7 @@ Result<RunRow> row_from_json(const std::string& text, const std::string& where) 
     row.index = j.at("index").get<std::size_t>();
     row.name = j.at("name").get<std::string>();
     row.overrides = j.at("overrides").get<std::vector<std::string>>();
+    row.collect = j.at("collect").get<std::vector<std::string>>();
     for (const auto& v : j.at("values"))
       row.values.push_back(v.is_null() ? std::numeric_limits<double>::quiet_NaN() : v.get<double>());
     row.status = j.at("status").get<std::string>();

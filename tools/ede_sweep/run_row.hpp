@@ -21,6 +21,7 @@ struct RunRow {
   std::size_t index = 0;
   std::string name;
   std::vector<std::string> overrides;  // what defines the run (checked on reuse)
+  std::vector<std::string> collect;    // the quantities' names (a changed `collect` is measured again)
   std::vector<double> values;          // one per collected quantity (NaN: none)
   std::string status;                  // ok, a run status (stalled, collapsed, ...), failed, timeout, killed
   std::string error;                   // why, when status is not ok

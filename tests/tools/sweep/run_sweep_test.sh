@@ -50,6 +50,11 @@ local)
   "$SWEEP" "$HERE/small.sweep.toml" --out-dir b -j 1 --no-timing -q >/dev/null 2>&1 || fail "the -j 1 sweep failed"
   cmp a/runs.csv b/runs.csv && cmp a/points.csv b/points.csv || fail "-j 2 and -j 1 tables differ"
   [ "$(wc -l <a/runs.csv)" = 9 ] || fail "runs.csv should have 8 rows and a header"
+  "$SWEEP" "$HERE/small.sweep.toml" --out-dir d --dry-run --pilot-seconds 0.2 >dry 2>&1 || { cat dry; fail "--dry-run failed"; }
+  cat dry
+  grep -q "8 runs (4 points x 2 seeds)" dry && grep -q "^estimate: .* min on [0-9]* workers, .* MiB of logs" dry ||
+    fail "--dry-run did not print the runs and the estimate"
+  [ ! -e d/runs.csv ] || fail "--dry-run ran the sweep"
   [ "$(wc -l <a/points.csv)" = 5 ] || fail "points.csv should have 4 rows and a header"
   head -1 a/runs.csv | grep -q "^run,name,physics.restitution,physics.tc,species.grains.velocity.speed,seed,energy@0.25," ||
     fail "runs.csv header: $(head -1 a/runs.csv)"
@@ -121,6 +126,19 @@ bad)
   grep -q "^2,p2,1.0,1e+06,,,timeout,stopped after the sweep's timeout of 2 s" bad/runs.csv || fail "the timed-out row"
   grep -q "^0,p0,.*,ok," bad/runs.csv && grep -q "^3,p3,.*,ok," bad/runs.csv || fail "the good points"
   grep -q "^1,1.5,0.5,1,0,," bad/points.csv || fail "the bad point's aggregate: $(cat bad/points.csv)"
+  # A bad sweep file is refused before anything runs, naming the file, the place and the fix.
+  printf 'scene = "%s"\ncolect = []\n' "$src/examples/cooling.toml" >typo.sweep.toml
+  "$SWEEP" typo.sweep.toml >out 2>&1; status=$?
+  cat out
+  [ $status = 1 ] && grep -q "typo.sweep.toml:2: unknown key 'colect'. Fix:" out || fail "an unknown key in a sweep file"
+  printf 'scene = "%s"\ncollect = ["energy@soon"]\n' "$src/examples/cooling.toml" >q.sweep.toml
+  "$SWEEP" q.sweep.toml >out 2>&1; status=$?
+  [ $status = 1 ] && grep -q "collect: 'energy@soon': the time after @ is not a number" out || fail "a bad quantity: $(cat out)"
+  printf 'scene = "%s"\n[[parameter]]\nkey = "physics.restitution"\nrange = { from = 1.0, count = 3 }\n' \
+    "$src/examples/cooling.toml" >r.sweep.toml
+  "$SWEEP" r.sweep.toml >out 2>&1; status=$?
+  [ $status = 1 ] && grep -q "a range needs from, to (numbers) and count" out || fail "a bad range: $(cat out)"
+  [ ! -e sweep-results ] || fail "a refused sweep file made a results folder"
   ;;
 *) fail "no case $case_name" ;;
 esac
