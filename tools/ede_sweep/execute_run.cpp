@@ -34,7 +34,6 @@ std::optional<RunRow> reusable_row(const Sweep& s, const PlannedRun& r) {
 RunRow execute_run(const Sweep& s, std::size_t k) {
   const PlannedRun& r = s.runs[k];
   if (auto row = reusable_row(s, r)) return *row;
-  std::filesystem::remove(row_path(s, r));
   if (stop_requested()) {
     RunRow none;
     none.index = r.index, none.name = r.name, none.overrides = r.overrides, none.status = "interrupted";

@@ -1,14 +1,17 @@
 // The child process of one run (see sweep.hpp): scene = base scene + the run's overrides, through the
 // library (load_scene_file), so a bad point fails exactly as `ede-sim --set` would and becomes a row with
 // that message. A log left by a killed process of the same run is resumed from its last resumable
-// keyframe (Simulation::resume: the finished log is byte-identical to an uninterrupted run's). The row
-// is written last, after the log is closed, measured and digested: its presence means the run is whole.
+// keyframe (Simulation::resume: the finished log is byte-identical to an uninterrupted run's); a finished
+// run whose row was written for another `collect` list is only measured again. The row is written last,
+// after the log is closed, measured and digested: its presence means the run is whole.
 #include <sys/prctl.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <csignal>
 #include <filesystem>
+#include <optional>
+#include <utility>
 
 #include "ede/ede.hpp"
 #include "interrupt.hpp"
@@ -44,6 +47,20 @@ bool can_resume(const std::string& path, const Scene& scene) {
   return !info.complete && info.resumable_keyframes > 0 && info.scene_text == scene.source_text;
 }
 
+// A finished run of the same point whose row was written for another `collect`: its log is complete and
+// still the one the row's digest describes, so measuring it again is enough.
+std::optional<std::pair<RunRow, RunSummary>> finished_run(const Sweep& s, const PlannedRun& r, const Log& log) {
+  auto row = read_row_file(row_path(s, r));
+  if (!row || row.value().overrides != r.overrides || !final_status(row.value().status) || row.value().digest.empty() ||
+      !log.info().complete)
+    return std::nullopt;
+  auto summary = summary_from_json(row.value().summary);
+  if (!summary) return std::nullopt;
+  auto digest = log.content_digest();
+  if (!digest || digest.value() != row.value().digest) return std::nullopt;
+  return std::make_pair(std::move(row).value(), std::move(summary).value());
+}
+
 }  // namespace
 
 int run_child(const Sweep& s, std::size_t k) {
@@ -71,6 +88,16 @@ int run_child(const Sweep& s, std::size_t k) {
     if (!w) std::fprintf(stderr, "ede-sweep: %s\n", w.error().message.c_str());
     return w ? 0 : 1;
   };
+  if (std::filesystem::exists(path))
+    if (auto old = Log::open(path))
+      if (auto done = finished_run(s, r, old.value())) {
+        auto values = collect_quantities(s.spec.collect, done->second, old.value());
+        if (!values) return finish("failed", "measuring the log: " + values.error().message);
+        row.values = values.value();
+        row.digest = done->first.digest;
+        row.summary = done->first.summary;
+        return finish(done->first.status, done->first.error);
+      }
   std::vector<Override> overrides;
   for (const std::string& o : r.overrides) overrides.push_back({o});
   auto scene = load_scene_file(s.spec.scene_path, overrides);
@@ -90,6 +117,7 @@ int run_child(const Sweep& s, std::size_t k) {
   auto digest = log.value().content_digest();
   if (!digest) return finish("failed", digest.error().message);
   row.digest = digest.value();
+  row.summary = summary_to_json(sim.value().summary());
   auto values = collect_quantities(s.spec.collect, sim.value().summary(), log.value());
   if (!values) return finish("failed", "measuring the log: " + values.error().message);
   row.values = values.value();

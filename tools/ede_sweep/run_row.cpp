@@ -3,7 +3,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <algorithm>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -24,6 +26,7 @@ std::string row_to_json(const RunRow& row) {
   j["wall_seconds"] = row.wall_seconds;
   j["log"] = row.log;
   j["digest"] = row.digest;
+  j["summary"] = row.summary;
   if (row.reused) j["reused"] = true;  // for rank 0's report; never in a row file (the child writes those)
   return j.dump();
 }
@@ -44,6 +47,7 @@ Result<RunRow> row_from_json(const std::string& text, const std::string& where) 
     row.log = j.at("log").get<std::string>();
     row.digest = j.at("digest").get<std::string>();
     row.reused = j.value("reused", false);
+    row.summary = j.value("summary", std::string());
     return row;
   } catch (const std::exception& e) {
     return Error{where + ": not a sweep row (" + e.what() + "). Fix: delete it; the run is then done again"};
@@ -67,6 +71,33 @@ Result<RunRow> read_row_file(const std::string& path) {
   std::stringstream s;
   s << in.rdbuf();
   return row_from_json(s.str(), path);
+}
+
+std::string summary_to_json(const RunSummary& s) {
+  nlohmann::json j;
+  j["by_kind"] = std::vector<std::uint64_t>(std::begin(s.counts.by_kind), std::end(s.counts.by_kind));
+  j["collisions_per_particle"] = s.collisions_per_particle;
+  j["sim_time"] = s.sim_time;
+  j["energy_initial"] = s.energy_initial;
+  j["energy_final"] = s.energy_final;
+  return j.dump();
+}
+
+Result<RunSummary> summary_from_json(const std::string& text) {
+  try {
+    const nlohmann::json j = nlohmann::json::parse(text);
+    RunSummary s;
+    const auto by_kind = j.at("by_kind").get<std::vector<std::uint64_t>>();
+    if (by_kind.size() != std::size(s.counts.by_kind)) return Error{"a row's summary counts another set of event kinds"};
+    std::copy(by_kind.begin(), by_kind.end(), s.counts.by_kind);
+    s.collisions_per_particle = j.at("collisions_per_particle").get<double>();
+    s.sim_time = j.at("sim_time").get<double>();
+    s.energy_initial = j.at("energy_initial").get<double>();
+    s.energy_final = j.at("energy_final").get<double>();
+    return s;
+  } catch (const std::exception& e) {
+    return Error{std::string("a row's summary: ") + e.what()};
+  }
 }
 
 bool final_status(const std::string& status) {

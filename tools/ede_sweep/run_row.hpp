@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "ede/error.hpp"
+#include "ede/simulation.hpp"
 
 namespace ede::sweep {
 
@@ -28,8 +29,14 @@ struct RunRow {
   double wall_seconds = 0;             // the run's process, start to row written
   std::string log;                     // relative to the results folder
   std::string digest;                  // the log's content digest (empty without a complete log)
+  std::string summary;                 // the run summary's fields the quantities use, as JSON (summary_to_json)
   bool reused = false;                 // not written: this execution reused an earlier row
 };
+
+// The run summary's fields that quantities read (counts, collisions per disk, times, energies), so that a
+// finished run is measured again for a changed `collect` without running it again.
+std::string summary_to_json(const RunSummary& s);
+Result<RunSummary> summary_from_json(const std::string& text);
 
 std::string row_to_json(const RunRow& row);
 Result<RunRow> row_from_json(const std::string& text, const std::string& where);

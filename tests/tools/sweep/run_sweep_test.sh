@@ -66,6 +66,15 @@ local)
   grep -q "8 runs: 8 ok (0 run now, 8 reused)" again || fail "the rerun ran something"
   [ "$(stat -c '%Y.%N' a/runs/*.ede | md5sum)" = "$before" ] || fail "the rerun touched a log"
   cmp a/runs.csv b/runs.csv || fail "the rerun's table differs"
+  # Another collect list: every finished log is measured again, none is run again.
+  sed -e "s|^scene = .*|scene = \"$src/examples/cooling.toml\"|" \
+      -e 's|^collect = .*|collect = ["energy@0.5", "collisions_per_particle"]|' "$HERE/small.sweep.toml" >more.sweep.toml
+  "$SWEEP" more.sweep.toml --out-dir a -j 2 --no-timing -q >/dev/null 2>&1 || fail "the sweep with another collect list failed"
+  [ "$(stat -c '%Y.%N' a/runs/*.ede | md5sum)" = "$before" ] || fail "another collect list ran the runs again"
+  head -1 a/runs.csv | grep -q ",seed,energy@0.5,collisions_per_particle,status," || fail "the new columns: $(head -1 a/runs.csv)"
+  column() { python3 -c "import csv,sys; print([r[sys.argv[2]] for r in csv.DictReader(open(sys.argv[1]))])" "$@"; }
+  [ "$(column a/runs.csv collisions_per_particle)" = "$(column b/runs.csv collisions_per_particle)" ] ||
+    fail "a quantity measured again differs from the first measurement"
   "$SWEEP" "$HERE/small.sweep.toml" --out-dir a --plot a/plot.png --quantity energy@0.25 --against species.grains.velocity.speed -q >/dev/null 2>err ||
     { cat err; fail "--plot failed"; }
   [ "$(head -c 4 a/plot.png | tail -c 3)" = PNG ] || fail "--plot wrote no PNG"
