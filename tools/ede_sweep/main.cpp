@@ -2,7 +2,7 @@
 //
 //   ede-sweep SWEEP.toml [--set key=value]... [--out-dir DIR] [-j N] [--no-timing] [-q]
 //   ede-sweep SWEEP.toml --dry-run
-//   ede-sweep SWEEP.toml --plot FIG.png [--quantity Q] [--against KEY]
+//   ede-sweep SWEEP.toml --plot FIG.png [--quantity Q] [--against KEY] [--reference henderson]
 //   mpirun -n K ede-sweep SWEEP.toml
 //
 // Thin: loads the sweep, checks the base scene and the quantities before anything runs, picks the pool
@@ -31,7 +31,7 @@ namespace {
 using namespace ede::sweep;
 
 struct Options {
-  std::string sweep_path, out_dir, plot_path, quantity, against;
+  std::string sweep_path, out_dir, plot_path, quantity, against, reference;
   std::vector<std::string> overrides;
   std::size_t jobs = std::max(1u, std::thread::hardware_concurrency());
   bool dry_run = false, no_timing = false, quiet = false;
@@ -64,8 +64,9 @@ ede::Status plot(const Sweep& s, const Options& opt) {
   if (keys.empty() || s.spec.collect.empty()) return ede::Error{"--plot needs a parameter and a collected quantity"};
   const std::string y = opt.quantity.empty() ? s.spec.collect.front() : opt.quantity;
   const std::string x = opt.against.empty() ? keys.front() : opt.against;
-  return ede::tools::run_plot_script_to("plot_sweep.py", {s.results + "/points.csv", opt.plot_path, "--x", x, "--y", y},
-                                        opt.plot_path);
+  std::vector<std::string> args = {s.results + "/points.csv", opt.plot_path, "--x", x, "--y", y};
+  if (!opt.reference.empty()) args.insert(args.end(), {"--reference", opt.reference});
+  return ede::tools::run_plot_script_to("plot_sweep.py", args, opt.plot_path);
 }
 
 int sweep_main(Sweep& s, const Options& opt, bool mpi) {
@@ -106,6 +107,8 @@ int run(int argc, char** argv) {
   app.add_option("--plot", opt.plot_path, "draw a quantity's mean and standard error against a parameter (PNG, PDF, SVG)");
   app.add_option("--quantity", opt.quantity, "--plot: the quantity (default: the first collected)");
   app.add_option("--against", opt.against, "--plot: the parameter key (default: the first)");
+  app.add_option("--reference", opt.reference, "--plot: a theory curve against the packing fraction: henderson")
+      ->check(CLI::IsMember({"henderson"}));
   app.add_flag("-q,--quiet", opt.quiet, "no line per finished run");
   app.add_option("--child", opt.child, "(internal) run number K of the sweep in this process")->group("");
   ede::tools::add_version_flags(app, "ede-sweep");

@@ -67,7 +67,7 @@ def main():
         f = henderson
         ax.plot(grid, [f(x) for x in grid], label=a.reference, **ede_style.THEORY)
     ax.set_xlabel(a.x)
-    ax.set_ylabel(f"{a.y} (mean ± standard error over seeds)")
+    ax.set_ylabel(f"{a.y}  (mean ± s.e., seeds)")
     if any(lines.keys()) or a.reference:
         ax.legend(fontsize=8)
     ede_style.save(fig, a.out)
