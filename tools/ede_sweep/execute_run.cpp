@@ -4,6 +4,7 @@
 // complete, whose content digest (a replay of the whole log: what it says, not how it is stored) equals
 // the row's. Anything less and the run is done again (its log resumed if a killed process left one).
 #include <filesystem>
+#include <limits>
 
 #include "child_process.hpp"
 #include "number_text.hpp"

@@ -3,6 +3,7 @@
 #include "mpi_pool.hpp"
 
 #include <cstdlib>
+#include <limits>
 
 #include "child_process.hpp"
 #include "local_pool.hpp"
@@ -27,6 +28,11 @@ void send_index(long long k, int to) { MPI_Send(&k, 1, MPI_LONG_LONG, to, kWork,
 
 std::vector<RunRow> hand_out(const Sweep& s, int size) {
   std::vector<RunRow> rows(s.runs.size());
+  for (std::size_t k = 0; k < rows.size(); ++k) {  // until its row comes back
+    rows[k].index = k, rows[k].name = s.runs[k].name, rows[k].status = "lost";
+    rows[k].values.assign(s.spec.collect.size(), std::numeric_limits<double>::quiet_NaN());
+    rows[k].error = "no readable row came back from the worker that ran it: run the sweep again";
+  }
   std::size_t next = 0, done = 0;
   int working = size - 1;
   while (working > 0) {
@@ -51,8 +57,7 @@ std::vector<RunRow> hand_out(const Sweep& s, int size) {
     }
   }
   for (std::size_t k = next; k < s.runs.size(); ++k) {  // not handed out (interrupted)
-    rows[k].index = k, rows[k].name = s.runs[k].name, rows[k].status = "interrupted";
-    rows[k].values.assign(s.spec.collect.size(), std::numeric_limits<double>::quiet_NaN());
+    rows[k].status = "interrupted";
     rows[k].error = "not run: the sweep was interrupted";
   }
   return rows;

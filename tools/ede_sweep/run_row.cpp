@@ -102,7 +102,7 @@ Result<RunSummary> summary_from_json(const std::string& text) {
 
 bool final_status(const std::string& status) {
   return status != "failed" && status != "timeout" && status != "killed" && status != "crashed" &&
-         status != "interrupted";
+         status != "interrupted" && status != "lost";
 }
 
 }  // namespace ede::sweep
