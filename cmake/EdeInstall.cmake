@@ -32,7 +32,7 @@ configure_file(${CMAKE_CURRENT_LIST_DIR}/ede.pc.in ${PROJECT_BINARY_DIR}/ede.pc 
 install(FILES ${PROJECT_BINARY_DIR}/ede.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
 
 # ede-bench-elastic too: `ede-bench effects` runs it from ede-bench's own directory.
-foreach(tool IN ITEMS ede-sim ede-replay ede-stats ede-crater ede-render ede-bench ede-bench-elastic ede-view)
+foreach(tool IN ITEMS ede-sim ede-replay ede-stats ede-crater ede-render ede-sweep ede-bench ede-bench-elastic ede-view)
   if(TARGET ${tool})
     install(TARGETS ${tool} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
   endif()

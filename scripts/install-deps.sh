@@ -7,11 +7,12 @@ set -eu
 # python3-matplotlib: the figures (tools/plot); libcairo2-dev: ede-render; libclang-rt-14-dev: sanitizers and
 # libFuzzer for Clang (CI). ffmpeg is optional (movies). pybind11-dev, python3-dev, python3-numpy: the Python
 # module (python/); python3-pytest runs its tests; python3-gsd and python3-ase read its exports back (GSD is
-# also written through python3-gsd).
+# also written through python3-gsd). libopenmpi-dev and openmpi-bin: ede-sweep on MPI ranks (mpirun -n K; the
+# build works without them, ede-sweep then runs local processes only).
 PACKAGES="build-essential cmake clang pkg-config capnproto libcapnp-dev libzstd-dev libcli11-dev \
 catch2 libtomlplusplus-dev libxxhash-dev zlib1g-dev nlohmann-json3-dev python3-matplotlib libcairo2-dev \
 libclang-rt-14-dev pybind11-dev python3-dev python3-numpy python3-pytest python3-gsd python3-ase \
-ffmpeg libcpp-httplib-dev chromium python3-websocket"
+ffmpeg libcpp-httplib-dev chromium python3-websocket libopenmpi-dev openmpi-bin"
 
 missing=""
 for p in $PACKAGES; do

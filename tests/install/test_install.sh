@@ -21,7 +21,7 @@ cmake --install "$build" --prefix "$prefix" >"$work/install.log" || fail "cmake 
 
 for f in include/ede/ede.hpp "$libdir/libede.a" "$libdir/cmake/ede/edeConfig.cmake" \
          "$libdir/cmake/ede/edeConfigVersion.cmake" "$libdir/cmake/ede/edeTargets.cmake" \
-         "$libdir/pkgconfig/ede.pc" bin/ede-sim bin/ede-replay bin/ede-stats bin/ede-crater bin/ede-render \
+         "$libdir/pkgconfig/ede.pc" bin/ede-sim bin/ede-replay bin/ede-stats bin/ede-crater bin/ede-render bin/ede-sweep \
          bin/ede-bench bin/ede-bench-elastic share/ede/plot/ede_style.py share/ede/plot/plot_hist.py; do
   [ -e "$prefix/$f" ] || fail "$f is not installed"
 done

@@ -1,0 +1,154 @@
+#!/bin/bash
+# ede-sweep as a user runs it, one case per ctest (tests/CMakeLists.txt):
+#
+#   run_sweep_test.sh CASE BUILD_DIR SOURCE_DIR
+#
+#   local      -j 2 and -j 1 give byte-identical tables (without the wall_seconds column); rerunning a
+#              finished sweep runs nothing and leaves every log untouched
+#   mpi        mpirun -n 2 gives the local run's tables byte for byte (skipped, exit 77, without mpirun or
+#              an ede-sweep built without MPI, and under sanitizers: OpenMPI's own allocations are leaks to
+#              LeakSanitizer)
+#   kill       kill -9 of a run's process mid-run loses nothing: the run is done again (resumed from its log)
+#              and the table is the uninterrupted one's
+#   mpi-kill   kill -9 of an MPI worker rank mid-sweep ends the job (OpenMPI aborts it); running the sweep
+#              again finishes it, and the table is the uninterrupted one's (skipped like mpi)
+#   bad        a bad point and a run stopped by the timeout are rows with their errors; the others finish
+set -u
+case_name=$1 build=$2 src=$3
+SWEEP=$build/tools/ede-sweep
+HERE=$src/tests/tools/sweep
+T=$(mktemp -d "${TMPDIR:-/tmp}/ede-sweep-test-XXXXXX")
+trap 'rm -rf "$T"' EXIT
+cd "$T" || exit 1
+fail() { echo "FAIL: $*"; exit 1; }
+
+need_mpi() {
+  if [ -n "${EDE_SANITIZED:-}" ]; then echo "skipped: OpenMPI under a sanitizer build"; exit 77; fi
+  MPIRUN=$(command -v mpirun) || { echo "skipped: no mpirun (apt-get install openmpi-bin libopenmpi-dev)"; exit 77; }
+  ldd "$SWEEP" | grep -q libmpi || { echo "skipped: ede-sweep was built without MPI (CMake found none)"; exit 77; }
+  MPI="timeout 120 $MPIRUN -n 2 --oversubscribe --allow-run-as-root"
+}
+
+# The pid of the process running run K of the sweep whose ede-sweep has pid $1 (waits up to 60 s for it
+# to have written part of its log).
+child_of() {
+  local parent=$1 run=$2 log=$3
+  for _ in $(seq 600); do
+    for p in $(pgrep -P "$parent"); do
+      if tr '\0' ' ' <"/proc/$p/cmdline" 2>/dev/null | grep -q -- "--child $run "; then
+        if [ -s "$log" ]; then echo "$p"; return 0; fi
+      fi
+    done
+    sleep 0.1
+  done
+  return 1
+}
+
+case $case_name in
+local)
+  "$SWEEP" "$HERE/small.sweep.toml" --out-dir a -j 2 --no-timing -q >out 2>&1 || { cat out; fail "the sweep failed"; }
+  "$SWEEP" "$HERE/small.sweep.toml" --out-dir b -j 1 --no-timing -q >/dev/null 2>&1 || fail "the -j 1 sweep failed"
+  cmp a/runs.csv b/runs.csv && cmp a/points.csv b/points.csv || fail "-j 2 and -j 1 tables differ"
+  [ "$(wc -l <a/runs.csv)" = 9 ] || fail "runs.csv should have 8 rows and a header"
+  "$SWEEP" "$HERE/small.sweep.toml" --out-dir d --dry-run --pilot-seconds 0.2 >dry 2>&1 || { cat dry; fail "--dry-run failed"; }
+  cat dry
+  grep -q "8 runs (4 points x 2 seeds)" dry && grep -q "^estimate: .* min on [0-9]* workers, .* MiB of logs" dry ||
+    fail "--dry-run did not print the runs and the estimate"
+  [ ! -e d/runs.csv ] || fail "--dry-run ran the sweep"
+  [ "$(wc -l <a/points.csv)" = 5 ] || fail "points.csv should have 4 rows and a header"
+  head -1 a/runs.csv | grep -q "^run,name,physics.restitution,physics.tc,species.grains.velocity.speed,seed,energy@0.25," ||
+    fail "runs.csv header: $(head -1 a/runs.csv)"
+  grep -c ",ok,," a/runs.csv | grep -q 8 || fail "every run should be ok"
+  before=$(stat -c '%Y.%N' a/runs/*.ede | md5sum)
+  sleep 1
+  "$SWEEP" "$HERE/small.sweep.toml" --out-dir a -j 2 --no-timing >again 2>&1 || { cat again; fail "the rerun failed"; }
+  cat again
+  grep -q "8 runs: 8 ok (0 run now, 8 reused)" again || fail "the rerun ran something"
+  [ "$(stat -c '%Y.%N' a/runs/*.ede | md5sum)" = "$before" ] || fail "the rerun touched a log"
+  cmp a/runs.csv b/runs.csv || fail "the rerun's table differs"
+  # Another collect list: every finished log is measured again, none is run again.
+  sed -e "s|^scene = .*|scene = \"$src/examples/cooling.toml\"|" \
+      -e 's|^collect = .*|collect = ["energy@0.5", "collisions_per_particle"]|' "$HERE/small.sweep.toml" >more.sweep.toml
+  "$SWEEP" more.sweep.toml --out-dir a -j 2 --no-timing -q >/dev/null 2>&1 || fail "the sweep with another collect list failed"
+  [ "$(stat -c '%Y.%N' a/runs/*.ede | md5sum)" = "$before" ] || fail "another collect list ran the runs again"
+  head -1 a/runs.csv | grep -q ",seed,energy@0.5,collisions_per_particle,status," || fail "the new columns: $(head -1 a/runs.csv)"
+  column() { python3 -c "import csv,sys; print([r[sys.argv[2]] for r in csv.DictReader(open(sys.argv[1]))])" "$@"; }
+  [ "$(column a/runs.csv collisions_per_particle)" = "$(column b/runs.csv collisions_per_particle)" ] ||
+    fail "a quantity measured again differs from the first measurement"
+  "$SWEEP" "$HERE/small.sweep.toml" --out-dir a --plot a/plot.png --quantity energy@0.25 --against species.grains.velocity.speed -q >/dev/null 2>err ||
+    { cat err; fail "--plot failed"; }
+  [ "$(head -c 4 a/plot.png | tail -c 3)" = PNG ] || fail "--plot wrote no PNG"
+  ;;
+mpi)
+  need_mpi
+  "$SWEEP" "$HERE/small.sweep.toml" --out-dir local -j 2 --no-timing -q >/dev/null 2>&1 || fail "the local sweep failed"
+  $MPI "$SWEEP" "$HERE/small.sweep.toml" --out-dir mpi --no-timing >out 2>&1 || { cat out; fail "the MPI sweep failed"; }
+  cat out
+  grep -q "8 runs: 8 ok (8 run now, 0 reused)" out || fail "the MPI sweep did not run every run"
+  cmp local/runs.csv mpi/runs.csv && cmp local/points.csv mpi/points.csv || fail "MPI and local tables differ"
+  $MPI "$SWEEP" "$HERE/small.sweep.toml" --out-dir mpi --no-timing >again 2>&1 || fail "the MPI rerun failed"
+  grep -q "(0 run now, 8 reused)" again || fail "the MPI rerun ran something"
+  ;;
+kill)
+  "$SWEEP" "$HERE/long.sweep.toml" --out-dir ref -j 1 --no-timing -q >/dev/null 2>&1 || fail "the reference sweep failed"
+  "$SWEEP" "$HERE/long.sweep.toml" --out-dir k -j 1 --no-timing >out 2>&1 &
+  sweep=$!
+  victim=$(child_of $sweep 1 k/runs/p0-s2.ede) || { kill $sweep; fail "run 1's process never appeared"; }
+  kill -9 "$victim" || fail "could not kill run 1's process"
+  echo "killed run 1's process $victim"
+  wait $sweep || { cat out; fail "the sweep failed after a run's process was killed"; }
+  cat out
+  cmp ref/runs.csv k/runs.csv && cmp ref/points.csv k/points.csv || fail "a killed run changed the table"
+  ;;
+mpi-kill)
+  need_mpi
+  "$SWEEP" "$HERE/long.sweep.toml" --out-dir ref -j 1 --no-timing -q >/dev/null 2>&1 || fail "the reference sweep failed"
+  $MPI "$SWEEP" "$HERE/long.sweep.toml" --out-dir m --no-timing >out 2>&1 &
+  job=$!
+  # The worker rank is the ede-sweep (child of mpirun) whose own child runs run 1.
+  victim=""
+  for _ in $(seq 600); do
+    for rank in $(pgrep -P "$(pgrep -P $job | head -1)" 2>/dev/null) $(pgrep -P $job); do
+      if child_of_rank=$(pgrep -P "$rank") && [ -n "$child_of_rank" ] && [ -s m/runs/p0-s2.ede ]; then
+        victim=$rank; break 2
+      fi
+    done
+    sleep 0.1
+  done
+  [ -n "$victim" ] || { kill $job; fail "no worker rank running run 1 was found"; }
+  kill -9 "$victim"
+  echo "killed the worker rank $victim"
+  wait $job && fail "the MPI job went on after a rank died (it should abort)"
+  [ -f m/runs.csv ] && fail "the aborted job wrote a table"
+  $MPI "$SWEEP" "$HERE/long.sweep.toml" --out-dir m --no-timing >again 2>&1 || { cat again; fail "the rerun failed"; }
+  cat again
+  grep -q "reused)" again || fail "no line about reused runs"
+  cmp ref/runs.csv m/runs.csv && cmp ref/points.csv m/points.csv || fail "the resumed MPI sweep's table differs"
+  ;;
+bad)
+  "$SWEEP" "$HERE/bad.sweep.toml" --out-dir bad -j 2 -q >out 2>&1
+  status=$?
+  cat out bad/runs.csv
+  [ $status = 3 ] || fail "exit status $status, expected 3 (some runs did not end ok)"
+  grep -q "4 runs: 1 failed, 2 ok, 1 timeout" out || fail "the closing line"
+  grep -q "^1,p1,1.5,0.5,,,failed,.*physics.restitution: must be in \[0, 1\], got 1.5" bad/runs.csv || fail "the bad point's row"
+  grep -q "^2,p2,1.0,1e+06,,,timeout,stopped after the sweep's timeout of 2 s" bad/runs.csv || fail "the timed-out row"
+  grep -q "^0,p0,.*,ok," bad/runs.csv && grep -q "^3,p3,.*,ok," bad/runs.csv || fail "the good points"
+  grep -q "^1,1.5,0.5,1,0,," bad/points.csv || fail "the bad point's aggregate: $(cat bad/points.csv)"
+  # A bad sweep file is refused before anything runs, naming the file, the place and the fix.
+  printf 'scene = "%s"\ncolect = []\n' "$src/examples/cooling.toml" >typo.sweep.toml
+  "$SWEEP" typo.sweep.toml >out 2>&1; status=$?
+  cat out
+  [ $status = 1 ] && grep -q "typo.sweep.toml:2: unknown key 'colect'. Fix:" out || fail "an unknown key in a sweep file"
+  printf 'scene = "%s"\ncollect = ["energy@soon"]\n' "$src/examples/cooling.toml" >q.sweep.toml
+  "$SWEEP" q.sweep.toml >out 2>&1; status=$?
+  [ $status = 1 ] && grep -q "collect: 'energy@soon': the time after @ is not a number" out || fail "a bad quantity: $(cat out)"
+  printf 'scene = "%s"\n[[parameter]]\nkey = "physics.restitution"\nrange = { from = 1.0, count = 3 }\n' \
+    "$src/examples/cooling.toml" >r.sweep.toml
+  "$SWEEP" r.sweep.toml >out 2>&1; status=$?
+  [ $status = 1 ] && grep -q "a range needs from, to (numbers) and count" out || fail "a bad range: $(cat out)"
+  [ ! -e sweep-results ] || fail "a refused sweep file made a results folder"
+  ;;
+*) fail "no case $case_name" ;;
+esac
+echo ok

@@ -1,0 +1,93 @@
+// One run, from a worker's side (see sweep.hpp): reuse, or a child process with retries.
+//
+// Reuse needs all of: the row file, with the same overrides and a final status, and the log it names,
+// complete, whose content digest (a replay of the whole log: what it says, not how it is stored) equals
+// the row's. Anything less and the run is done again (its log resumed if a killed process left one).
+#include <filesystem>
+#include <limits>
+
+#include "child_process.hpp"
+#include "number_text.hpp"
+#include "sweep.hpp"
+
+namespace ede::sweep {
+
+std::string runs_dir(const Sweep& s) { return s.results + "/runs"; }
+std::string log_path(const Sweep& s, const PlannedRun& r) { return runs_dir(s) + "/" + r.name + ".ede"; }
+std::string row_path(const Sweep& s, const PlannedRun& r) { return runs_dir(s) + "/" + r.name + ".json"; }
+
+std::optional<RunRow> reusable_row(const Sweep& s, const PlannedRun& r) {
+  auto row = read_row_file(row_path(s, r));
+  if (!row || row.value().overrides != r.overrides || !final_status(row.value().status) ||
+      row.value().collect != s.spec.collect || row.value().values.size() != s.spec.collect.size() ||
+      row.value().digest.empty())
+    return std::nullopt;
+  auto log = Log::open(log_path(s, r));
+  if (!log || !log.value().info().complete) return std::nullopt;
+  auto digest = log.value().content_digest();
+  if (!digest || digest.value() != row.value().digest) return std::nullopt;
+  RunRow out = std::move(row).value();
+  out.index = r.index;
+  out.reused = true;
+  return out;
+}
+
+RunRow execute_run(const Sweep& s, std::size_t k) {
+  const PlannedRun& r = s.runs[k];
+  if (auto row = reusable_row(s, r)) return *row;
+  if (stop_requested()) {
+    RunRow none;
+    none.index = r.index, none.name = r.name, none.overrides = r.overrides, none.status = "interrupted";
+    none.values.assign(s.spec.collect.size(), std::numeric_limits<double>::quiet_NaN());
+    none.error = "not run: the sweep was interrupted";
+    return none;
+  }
+  std::vector<std::string> argv = s.child_argv;
+  argv.push_back("--child");
+  argv.push_back(std::to_string(k));
+  const std::string err_path = runs_dir(s) + "/" + r.name + ".err";
+  RunRow row;
+  row.index = r.index;
+  row.name = r.name;
+  row.overrides = r.overrides;
+  row.collect = s.spec.collect;
+  row.log = "runs/" + r.name + ".ede";
+  row.values.assign(s.spec.collect.size(), std::numeric_limits<double>::quiet_NaN());
+  const auto no_log = [&](RunRow& out) {
+    if (!std::filesystem::exists(log_path(s, r))) out.log.clear();
+    return out;
+  };
+  for (int attempt = 0; attempt <= s.spec.retries; ++attempt) {
+    auto end = run_child_process(argv, err_path, s.spec.timeout);
+    if (!end) {
+      row.status = "failed";
+      row.error = end.error().message;
+      return row;
+    }
+    if (auto written = read_row_file(row_path(s, r)); written && end.value().exit_status == 0) {
+      std::error_code ignored;
+      if (std::filesystem::file_size(err_path, ignored) == 0) std::filesystem::remove(err_path, ignored);
+      return std::move(written).value();
+    }
+    row.wall_seconds = end.value().wall_seconds;
+    if (stop_requested()) {
+      row.status = "interrupted";
+      row.error = "the sweep was interrupted (its log is kept: a rerun resumes it)";
+      return row;
+    }
+    if (end.value().timed_out) {
+      no_log(row);
+      row.status = "timeout";
+      row.error = "stopped after the sweep's timeout of " + tools::brief(s.spec.timeout) +
+                  " s (its log is kept: a rerun resumes it; raise timeout = ... to let it finish)";
+      return row;  // a stalled run is not retried: it would stall again
+    }
+    row.status = end.value().signalled ? "killed" : "crashed";
+    row.error = "the run's process " + std::string(end.value().signalled ? "was killed by signal " : "exited with status ") +
+                std::to_string(end.value().signalled ? end.value().exit_status - 128 : end.value().exit_status) +
+                " without a result (see " + err_path + ")";
+  }
+  return no_log(row);
+}
+
+}  // namespace ede::sweep

@@ -1,0 +1,150 @@
+// ede-sweep: a sweep file -> runs (local processes or MPI ranks) -> runs.csv and points.csv (docs/sweeps.md).
+//
+//   ede-sweep SWEEP.toml [--set key=value]... [--out-dir DIR] [-j N] [--no-timing] [-q]
+//   ede-sweep SWEEP.toml --dry-run
+//   ede-sweep SWEEP.toml --plot FIG.png [--quantity Q] [--against KEY] [--reference henderson]
+//   mpirun -n K ede-sweep SWEEP.toml
+//
+// Thin: loads the sweep, checks the base scene and the quantities before anything runs, picks the pool
+// (MPI when started by mpirun with more than one rank, else local processes), writes the tables.
+// `--child K` (hidden) is the process of one run. Exit status: 0 when every run ended ok, 3 when some did
+// not (the tables say which and why), 1 on a bad sweep file or an I/O error, 2 on a bad command line,
+// 130/143 when interrupted (the finished runs are in the tables; running again goes on).
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <thread>
+
+#include "command_line.hpp"
+#include "dry_run.hpp"
+#include "child_process.hpp"
+#include "local_pool.hpp"
+#include "mpi_pool.hpp"
+#include "plot_runner.hpp"
+#include "report_error.hpp"
+#include "results_table.hpp"
+#include "sweep.hpp"
+#include "tool_main.hpp"
+
+namespace {
+
+using namespace ede::sweep;
+
+struct Options {
+  std::string sweep_path, out_dir, plot_path, quantity, against, reference;
+  std::vector<std::string> overrides;
+  std::size_t jobs = std::max(1u, std::thread::hardware_concurrency());
+  bool dry_run = false, no_timing = false, quiet = false;
+  double pilot_seconds = 1.0;
+  long long child = -1;
+};
+
+int fail(const std::string& message) {
+  ede::tools::report_error("ede-sweep", message);
+  return 1;
+}
+
+ede::Result<Sweep> load(const Options& opt) {
+  auto spec = load_sweep_file(opt.sweep_path);
+  if (!spec) return spec.error();
+  Sweep s;
+  s.spec = std::move(spec).value();
+  for (const std::string& o : opt.overrides) s.spec.base_overrides.push_back(o);
+  if (ede::Status q = check_quantities(s.spec.collect); !q) return ede::Error{opt.sweep_path + ": " + q.error().message};
+  s.results = opt.out_dir.empty() ? s.spec.results : opt.out_dir;
+  s.runs = expand_runs(s.spec);
+  s.progress = !opt.quiet;
+  s.child_argv = {std::filesystem::read_symlink("/proc/self/exe").string(), opt.sweep_path, "--out-dir", s.results, "-q"};
+  for (const std::string& o : opt.overrides) s.child_argv.insert(s.child_argv.end(), {"--set", o});
+  return s;
+}
+
+ede::Status plot(const Sweep& s, const Options& opt) {
+  const std::vector<std::string> keys = parameter_columns(s.spec);
+  if (keys.empty() || s.spec.collect.empty()) return ede::Error{"--plot needs a parameter and a collected quantity"};
+  const std::string y = opt.quantity.empty() ? s.spec.collect.front() : opt.quantity;
+  const std::string x = opt.against.empty() ? keys.front() : opt.against;
+  std::vector<std::string> args = {s.results + "/points.csv", opt.plot_path, "--x", x, "--y", y};
+  if (!opt.reference.empty()) args.insert(args.end(), {"--reference", opt.reference});
+  return ede::tools::run_plot_script_to("plot_sweep.py", args, opt.plot_path);
+}
+
+int sweep_main(Sweep& s, const Options& opt, bool mpi) {
+  std::error_code ec;
+  std::filesystem::create_directories(runs_dir(s), ec);
+  if (ec) return fail(runs_dir(s) + ": cannot create the results folder: " + ec.message());
+  install_stop_handler();
+  std::vector<RunRow> rows;
+  if (mpi) {
+    auto got = run_mpi(s);
+    if (!got) return 0;  // a worker rank: rank 0 writes the tables
+    rows = std::move(*got);
+  } else {
+    rows = run_local(s, opt.jobs);
+  }
+  if (ede::Status w = write_tables(s, rows, !opt.no_timing); !w) return fail(w.error().message);
+  std::printf("%s\nruns.csv and points.csv in %s\n", rows_summary(rows).c_str(), s.results.c_str());
+  if (!opt.plot_path.empty())
+    if (ede::Status p = plot(s, opt); !p) return fail(p.error().message);
+  if (stop_requested()) return 128 + stop_signal();
+  for (const RunRow& r : rows)
+    if (r.status != "ok") return 3;
+  return 0;
+}
+
+}  // namespace
+
+int run(int argc, char** argv) {
+  Options opt;
+  CLI::App app{"ede-sweep: run a sweep (parameters x seeds) of a scene and collect one results table"};
+  app.add_option("sweep", opt.sweep_path, "sweep file (TOML); see docs/sweeps.md")->required();
+  app.add_option("--set", opt.overrides, "override a base scene value for every run, e.g. --set stop.time=1 (repeatable)");
+  app.add_option("--out-dir", opt.out_dir, "the results folder (default: results = ... in the sweep file)");
+  app.add_option("-j,--jobs", opt.jobs, "runs at once on this machine (default: every core)")->check(CLI::PositiveNumber);
+  app.add_flag("--dry-run", opt.dry_run, "print the number of runs and an estimate of time and disk, run nothing");
+  app.add_option("--pilot-seconds", opt.pilot_seconds, "--dry-run: wall seconds per pilot run (default 1)");
+  app.add_flag("--no-timing", opt.no_timing, "leave the wall_seconds column out of runs.csv (tables then compare byte for byte)");
+  app.add_option("--plot", opt.plot_path, "draw a quantity's mean and standard error against a parameter (PNG, PDF, SVG)");
+  app.add_option("--quantity", opt.quantity, "--plot: the quantity (default: the first collected)");
+  app.add_option("--against", opt.against, "--plot: the parameter key (default: the first)");
+  app.add_option("--reference", opt.reference, "--plot: a theory curve against the packing fraction: henderson")
+      ->check(CLI::IsMember({"henderson"}));
+  app.add_flag("-q,--quiet", opt.quiet, "no line per finished run");
+  app.add_option("--child", opt.child, "(internal) run number K of the sweep in this process")->group("");
+  ede::tools::add_version_flags(app, "ede-sweep");
+
+  const bool mpi = launched_by_mpirun() && [&] {
+    for (int k = 1; k < argc; ++k)
+      if (std::string(argv[k]) == "--child") return false;
+    return true;
+  }();
+  int world = 1;
+  if (mpi) {
+    auto started = mpi_start(argc, argv);
+    if (!started) return fail(started.error().message);
+    world = started.value();
+  }
+  const auto finish = [&](int code) {
+    if (mpi) mpi_finish();
+    return code;
+  };
+  if (const auto stop = ede::tools::parse_command_line(app, argc, argv)) return finish(*stop);
+  auto loaded = load(opt);
+  if (!loaded) return finish(mpi_rank() == 0 ? fail(loaded.error().message) : 1);
+  Sweep& s = loaded.value();
+  if (opt.child >= 0) {
+    if (std::size_t(opt.child) >= s.runs.size()) return fail("--child " + std::to_string(opt.child) + ": no such run");
+    return run_child(s, std::size_t(opt.child));
+  }
+  std::vector<ede::Override> base;
+  for (const std::string& o : s.spec.base_overrides) base.push_back({o});
+  if (auto scene = ede::load_scene_file(s.spec.scene_path, base); !scene)
+    return finish(mpi_rank() == 0 ? fail("the sweep's base scene: " + scene.error().message) : 1);
+  if (opt.dry_run) {
+    if (mpi_rank() == 0) std::printf("%s", dry_run_report(s, mpi ? std::size_t(std::max(1, world - 1)) : opt.jobs, opt.pilot_seconds).c_str());
+    return finish(0);
+  }
+  return finish(sweep_main(s, opt, mpi && world > 1));
+}
+
+int main(int argc, char** argv) { return ede::tools::run_tool("ede-sweep", run, argc, argv); }

@@ -1,0 +1,31 @@
+// The quantities a sweep collects per run, by name (docs/sweeps.md): the run summary's fields, and
+// ede-stats / ede-crater quantities at given times, computed from the run's log with the library's
+// analysis functions, so a quantity is the same number the tool prints for that log.
+//
+//   summary: events, pair_collisions, wall_collisions, collisions_per_particle, sim_time, energy_initial,
+//            energy_final, energy_ratio
+//   energy@T (mean kinetic energy per disk at T), collisions@T (collisions per particle up to T)
+//   crater.METRIC or crater.METRIC@T (ede-crater's metrics: depth, width, area, ...; default time: when
+//            10% of the energy is left, as ede-crater measures)
+//   pressure.NAME (z_virial, z_wall, virial, wall, kT, packing_fraction, and z_henderson: Henderson's Z at the
+//            run's packing fraction; NAME_error the standard error over the blocks, ede-stats pressure's)
+// Names are checked before any run starts. Rejected: a plug-in list of quantity objects (the names map to
+// a handful of library calls; a table of functions per name would be longer than the switch).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ede/ede.hpp"
+
+namespace ede::sweep {
+
+// Fails naming the first unknown quantity and the known ones.
+Status check_quantities(const std::vector<std::string>& names);
+
+// One value per name (NaN where a quantity has no value, e.g. no crater); fails on a log the analyses
+// cannot read.
+Result<std::vector<double>> collect_quantities(const std::vector<std::string>& names, const RunSummary& summary,
+                                               const Log& log);
+
+}  // namespace ede::sweep
