@@ -23,23 +23,6 @@ struct EventRequest {
   bool positions = false, before = false, impulse = false;
 };
 
-// How many events the request will give at most, from the log's size and time span (a time range is
-// assumed to hold its share of the events, plus a margin): reserving it spares the columns' regrowth.
-std::size_t expected_events(const LogInfo& info, const EventRange& r) {
-  const double total = double(info.events);
-  double n = total;
-  if (r.from_event || r.to_event)
-    n = double(std::min<std::uint64_t>(info.events, r.to_event.value_or(info.events)) -
-               std::min<std::uint64_t>(info.events, r.from_event.value_or(0)));
-  const double span = double(info.end_time) - info.start_time;
-  if ((r.from_time || r.to_time) && span > 0) {
-    const double a = r.from_time ? double(*r.from_time) : info.start_time;
-    const double b = r.to_time ? double(*r.to_time) : double(info.end_time);
-    n = std::min(n, total * std::max(0.0, b - a) / span * 1.1 + 1024);
-  }
-  return std::size_t(std::max(0.0, std::min(n, total)));
-}
-
 template <class V>
 void put(py::array& rows, const char* field, const V& column) {
   using E = typename V::value_type;
@@ -74,8 +57,7 @@ py::array events_in(const Log& log, const EventRequest& request) {
       State s = std::move(log.state_at_event(0)).value();
       mass = s.mass.values<T>();
     }
-    Result<EventColumns> got = log.event_columns(request.range, request.positions, request.before || request.impulse,
-                                                 expected_events(log.info(), request.range));
+    Result<EventColumns> got = log.event_columns(request.range, request.positions, request.before || request.impulse);
     c = value_or_raise(std::move(got));
   }
   py::list fields;

@@ -134,7 +134,7 @@ TEST_CASE("Log::event_columns hold exactly what the events hold", "[replay][log]
     const ede::Log log = logged(std::string("log-columns-") + std::to_string(std::strlen(scalar)) + ".ede", {{std::string("engine.scalar=") + scalar}});
     const ede::EventRange range{.from_time = 0.1, .to_time = 0.5};
     const auto events = log.events(range).value();
-    const ede::EventColumns c = log.event_columns(range, true, true, 10).value();
+    const ede::EventColumns c = log.event_columns(range, true, true).value();
     REQUIRE(c.size() == events.size());
     REQUIRE(c.size() > 100);
     CHECK(c.time.scalar() == log.info().scalar);
@@ -181,13 +181,13 @@ TEST_CASE("Log::event_columns gives the same bits on any number of threads", "[r
       {}, {.from_time = 0.1, .to_time = 0.5}, {.from_event = 250, .to_event = 1201}, {.to_time = 0.2},
       {.from_time = 0.7}, {.from_event = 3, .to_event = 4}};
   for (const ede::EventRange& range : ranges) {
-    const ede::EventColumns one = log.event_columns(range, true, true, 0, 1).value();
+    const ede::EventColumns one = log.event_columns(range, true, true, 1).value();
     const auto events = log.events(range).value();
     REQUIRE(one.size() == events.size());
     REQUIRE(one.size() > 0);
     for (const unsigned threads : {2u, 3u, 8u}) {
       INFO("threads " << threads << ", events " << one.size());
-      require_same_columns(one, log.event_columns(range, true, true, 0, threads).value());
+      require_same_columns(one, log.event_columns(range, true, true, threads).value());
     }
   }
 }

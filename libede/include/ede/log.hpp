@@ -131,11 +131,11 @@ class Log {
   // The same, one at a time; f returns false to stop early.
   Status for_each_event(const EventRange& range, const std::function<bool(const Event&)>& f) const;
   // The same as columns: several times faster than one Event at a time for long ranges. `positions` and
-  // `before` add those columns; `expected` (optional) reserves room for that many events. A range over
-  // several keyframes is replayed in pieces on up to `threads` threads (0: one per core), each from its
-  // own keyframe; the columns are the same bits whatever the number of threads.
+  // `before` add those columns. The columns are sized once from the range. A range over several
+  // keyframes is replayed in pieces on up to `threads` threads (0: one per core), each from its own
+  // keyframe; the columns are the same bits whatever the number of threads.
   Result<EventColumns> event_columns(const EventRange& range, bool positions = false, bool before = false,
-                                     std::size_t expected = 0, unsigned threads = 0) const;
+                                     unsigned threads = 0) const;
   // Counts by kind from the chunks' kind columns alone (no replay).
   Result<EventCounts> count_events() const;
 

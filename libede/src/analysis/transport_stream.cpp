@@ -40,7 +40,7 @@ Status for_each_window_event(const Log& log, const Window& w, bool positions,
     range.from_event = next;
     range.to_event = std::min(total, next + kBatch);
     range.to_time = w.to;
-    auto c = log.event_columns(range, positions, false, std::size_t(range.to_event.value() - next));
+    auto c = log.event_columns(range, positions, false);
     if (!c) return c.error();
     const EventColumns& e = c.value();
     for (std::size_t k = 0; k < e.size(); ++k) {

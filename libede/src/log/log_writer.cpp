@@ -124,7 +124,7 @@ struct ChunkCoder {
   ChunkEncoder<T> chunk{mass, format_version, physics};
   Particles<T> replayed;
 
-  ChunkCoder(std::uint32_t version) : format_version(version) {}
+  explicit ChunkCoder(std::uint32_t version) : format_version(version) {}
 
   std::vector<unsigned char> code(std::uint64_t first_event, const std::vector<EventOutcome<T>>& events) {
     chunk.reset(first_event);

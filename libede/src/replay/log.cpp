@@ -223,7 +223,7 @@ Status Log::for_each_event(const EventRange& range, const std::function<bool(con
 }
 
 Result<EventColumns> Log::event_columns(const EventRange& range, bool positions, bool before,
-                                        std::size_t expected, unsigned threads) const {
+                                        unsigned threads) const {
   return with_scalar(impl_->info.scalar, [&]<class T>() -> Result<EventColumns> {
     auto replay = impl_->replay_in<T>();
     if (!replay) return replay.error();
@@ -232,7 +232,6 @@ Result<EventColumns> Log::event_columns(const EventRange& range, bool positions,
     const EventSpan<T> sp = span.value();
     ColumnsOf<T> c;
     c.positions = positions, c.before = before;
-    (void)expected;  // the span's length is known: the columns are sized to it
     if (sp.first < sp.end) {
       if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
       const std::vector<std::uint64_t> bounds = piece_bounds(*impl_->reader, sp.first, sp.end, threads);
