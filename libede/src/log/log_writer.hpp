@@ -20,9 +20,10 @@
 
 namespace ede {
 
-// max(2^20, 4 N) logged events: a keyframe costs ~34 bytes per disk, events ~24 bytes each in format
-// version 1 (fewer in version 2), so keyframes stayed under ~30% of a version 1 log at any N (a fixed 2^20 took 55% at N = 10^6), and seeking replays at most
-// ~4 N events (~0.3 s at N = 10^6, ~15 M events/s). See docs/performance.md, "Event log".
+// max(2^18, 4 N) logged events: a keyframe costs ~34 bytes per disk; at N = 10^4 a version 2 log holds
+// ~4.4 bytes per event, so 2^18 adds ~0.5 B/event and brings the median seek in a 10^7-event log from
+// ~34 ms (2^20) to ~14 ms. The 4 N term keeps keyframes a bounded share of the file at large N (a fixed
+// interval took 55% of a version 1 log at N = 10^6). See docs/performance.md, "Event log".
 std::uint64_t auto_keyframe_interval(std::size_t disks);
 
 struct LogSettings {
