@@ -24,6 +24,7 @@
 // prediction of v_j' (it is exact only when the rule's own v_j' happens to round the same way).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -227,6 +228,10 @@ struct DecodedEvent {
   std::int32_t i = -1, j = -1;
   T vix{}, viy{}, vjx{}, vjy{};
   bool tc_elastic = false;  // encoding 2: the kind byte's TC flag
+  // Encoding 2 pairs: the positions of i and j at `time` (advance_disk), computed for the prediction and
+  // reused by apply_event instead of advancing the records a second time (same function, same bits).
+  bool advanced = false;
+  T xi{}, yi{}, xj{}, yj{};
 };
 
 // Decodes a chunk one event at a time against a replayed state: the next event's fields need the state
@@ -249,21 +254,27 @@ class ChunkDecoder {
   std::uint64_t next_index() const { return first_event_ + decoded_; }
   // Decodes the next event against `state` (which must hold the state just before it).
   Status next(const Particles<T>& state, DecodedEvent<T>& e);
+  // The same without building a Status (replay's loop): false on an error, then error_message() says it.
+  bool decode(const Particles<T>& state, DecodedEvent<T>& e);
+  std::string error_message() const;
   // After the last event: every column consumed exactly.
   Status check_consumed() const;
 
  private:
-  bool fail(const std::string& what);
-  bool read_disk(ByteReader& r, std::int32_t& out);
+  // The per-event readers are forced inline into decode (replay spends most of its time here; as calls
+  // they cost ~15 % of it); the failure paths, which build messages, are kept out of line.
+  [[gnu::cold, gnu::noinline]] bool fail(const std::string& what);
+  [[gnu::cold, gnu::noinline]] bool fail_disk(u128 v);
+  [[gnu::always_inline]] inline bool read_disk(ByteReader& r, std::int32_t& out);
   bool read_scalar(T& out);
-  bool read_residual(T predicted, T& out);
+  [[gnu::always_inline]] inline bool read_residual(T predicted, T& out);
   bool read_time(T& out);
-  bool read_time_v2(T predicted, T& out);
-  bool accept_time(u128 key, T& out);
-  bool read_kind(DecodedEvent<T>& e);
-  bool read_ids(DecodedEvent<T>& e);
+  [[gnu::always_inline]] inline bool read_time_v2(T predicted, T& out);
+  [[gnu::always_inline]] inline bool accept_time(u128 key, T& out);
+  [[gnu::always_inline]] inline bool read_kind(DecodedEvent<T>& e);
+  [[gnu::always_inline]] inline bool read_ids(DecodedEvent<T>& e);
   bool read_fields(const Particles<T>& state, DecodedEvent<T>& e);
-  bool read_v2(const Particles<T>& state, DecodedEvent<T>& e);
+  [[gnu::always_inline]] inline bool read_v2(const Particles<T>& state, DecodedEvent<T>& e);
 
   std::vector<std::uint64_t> storage_;
   ByteReader times_, kinds_, disks_, partners_, residuals_;
@@ -299,6 +310,48 @@ Result<T> last_time_of_column(const unsigned char* data, std::size_t size, std::
 // Applies a decoded event to a state with the shared state-update functions. Returns false if a record
 // it touched is no longer finite: a log can only say so if it is corrupted (e.g. a huge but finite time).
 template <class T>
-bool apply_event(const DecodedEvent<T>& e, Particles<T>& state, T lx, T ly);
+inline bool finite_record(const Disk<T>& d) {
+  return std::isfinite(double(d.x)) && std::isfinite(double(d.y)) && std::isfinite(double(d.t));
+}
+
+template <class T>
+inline bool apply_event(const DecodedEvent<T>& e, Particles<T>& p, T lx, T ly) {
+  switch (e.kind) {
+    case EventKind::Pair: {
+      Disk<T>& a = p.disk[std::size_t(e.i)];
+      Disk<T>& b = p.disk[std::size_t(e.j)];
+      if (e.advanced) {
+        a.x = e.xi, a.y = e.yi, a.t = e.time;
+        b.x = e.xj, b.y = e.yj, b.t = e.time;
+      } else {
+        advance_disk(a, e.time, p.gx, p.gy);
+        advance_disk(b, e.time, p.gx, p.gy);
+      }
+      a.vx = e.vix, a.vy = e.viy, b.vx = e.vjx, b.vy = e.vjy;
+      return finite_record(a) && finite_record(b);
+    }
+    case EventKind::Wall: {
+      Disk<T>& a = p.disk[std::size_t(e.i)];
+      advance_disk(a, e.time, p.gx, p.gy);
+      a.vx = e.vix, a.vy = e.viy;
+      return finite_record(a);
+    }
+    case EventKind::Wrap: {
+      Disk<T>& a = p.disk[std::size_t(e.i)];
+      wrap_disk(a, e.time, e.j, lx, ly);
+      return finite_record(a);
+    }
+    case EventKind::Action: {
+      bool ok = true;
+      for (Disk<T>& d : p.disk) {
+        reverse_disk(d, e.time, p.gx, p.gy);
+        ok = ok && finite_record(d);
+      }
+      return ok;
+    }
+    default: return true;
+  }
+}
+
 
 }  // namespace ede

@@ -43,10 +43,14 @@ template <class T>
 bool ChunkDecoder<T>::read_disk(ByteReader& r, std::int32_t& out) {
   u128 v;
   if (!r.varint(v, 32)) return fail("a disk id is cut short");
-  if (v >= disks_count_)
-    return fail("disk id " + std::to_string(std::uint64_t(v)) + " out of range (N = " + std::to_string(disks_count_) + ")");
+  if (v >= disks_count_) return fail_disk(v);
   out = std::int32_t(v);
   return true;
+}
+
+template <class T>
+bool ChunkDecoder<T>::fail_disk(u128 v) {
+  return fail("disk id " + std::to_string(std::uint64_t(v)) + " out of range (N = " + std::to_string(disks_count_) + ")");
 }
 
 template <class T>
@@ -182,8 +186,13 @@ bool ChunkDecoder<T>::read_v2(const Particles<T>& p, DecodedEvent<T>& e) {
   if (!read_kind(e) || !read_ids(e)) return false;
   if (!read_time_v2(predicted_event_time(physics_, p, e.kind, e.i, e.j), e.time)) return false;
   if (e.kind == EventKind::Pair) {
+    Disk<T> a = p.disk[std::size_t(e.i)], b = p.disk[std::size_t(e.j)];
+    advance_disk(a, e.time, physics_.gx, physics_.gy);
+    advance_disk(b, e.time, physics_.gx, physics_.gy);
+    e.advanced = true;
+    e.xi = a.x, e.yi = a.y, e.xj = b.x, e.yj = b.y;
     T v[4];
-    predict_pair_velocities(physics_, p, e.i, e.j, e.time, e.tc_elastic, v);
+    predict_pair_velocities(physics_, p, e.i, e.j, a, b, e.tc_elastic, v);
     return read_residual(v[0], e.vix) && read_residual(v[1], e.viy) && read_residual(v[2], e.vjx) &&
            read_residual(v[3], e.vjy);
   }
@@ -196,13 +205,28 @@ bool ChunkDecoder<T>::read_v2(const Particles<T>& p, DecodedEvent<T>& e) {
 }
 
 template <class T>
-Status ChunkDecoder<T>::next(const Particles<T>& state, DecodedEvent<T>& e) {
-  if (done()) return Error{"chunk at event " + std::to_string(first_event_) + " has no more events"};
-  e = DecodedEvent<T>{};
+bool ChunkDecoder<T>::decode(const Particles<T>& state, DecodedEvent<T>& e) {
+  if (done()) return fail("the chunk has no more events");
   e.index = first_event_ + decoded_;
+  e.tc_elastic = false;
+  e.advanced = false;
+  e.i = e.j = -1;
+  e.vix = e.viy = e.vjx = e.vjy = T(0);  // a wall, wrap or action event leaves some of them unset
   const bool ok = encoding_ >= 2 ? read_v2(state, e) : read_time(e.time) && read_fields(state, e);
-  if (!ok) return Error{"event " + std::to_string(e.index) + ": " + error_};
+  if (!ok) return false;
   ++decoded_;
+  return true;
+}
+
+template <class T>
+std::string ChunkDecoder<T>::error_message() const {
+  return "event " + std::to_string(first_event_ + decoded_) + ": " + error_;
+}
+
+template <class T>
+Status ChunkDecoder<T>::next(const Particles<T>& state, DecodedEvent<T>& e) {
+  e = DecodedEvent<T>{};
+  if (!decode(state, e)) return Error{error_message()};
   return Ok{};
 }
 
@@ -215,51 +239,8 @@ Status ChunkDecoder<T>::check_consumed() const {
   return Ok{};
 }
 
-template <class T>
-static bool finite_record(const Disk<T>& d) {
-  return std::isfinite(double(d.x)) && std::isfinite(double(d.y)) && std::isfinite(double(d.t));
-}
-
-template <class T>
-bool apply_event(const DecodedEvent<T>& e, Particles<T>& p, T lx, T ly) {
-  switch (e.kind) {
-    case EventKind::Pair: {
-      Disk<T>& a = p.disk[std::size_t(e.i)];
-      Disk<T>& b = p.disk[std::size_t(e.j)];
-      advance_disk(a, e.time, p.gx, p.gy);
-      advance_disk(b, e.time, p.gx, p.gy);
-      a.vx = e.vix, a.vy = e.viy, b.vx = e.vjx, b.vy = e.vjy;
-      return finite_record(a) && finite_record(b);
-    }
-    case EventKind::Wall: {
-      Disk<T>& a = p.disk[std::size_t(e.i)];
-      advance_disk(a, e.time, p.gx, p.gy);
-      a.vx = e.vix, a.vy = e.viy;
-      return finite_record(a);
-    }
-    case EventKind::Wrap: {
-      Disk<T>& a = p.disk[std::size_t(e.i)];
-      wrap_disk(a, e.time, e.j, lx, ly);
-      return finite_record(a);
-    }
-    case EventKind::Action: {
-      bool ok = true;
-      for (Disk<T>& d : p.disk) {
-        reverse_disk(d, e.time, p.gx, p.gy);
-        ok = ok && finite_record(d);
-      }
-      return ok;
-    }
-    default: return true;
-  }
-}
-
 template class ChunkDecoder<float>;
 template class ChunkDecoder<double>;
 template class ChunkDecoder<long double>;
-template bool apply_event<float>(const DecodedEvent<float>&, Particles<float>&, float, float);
-template bool apply_event<double>(const DecodedEvent<double>&, Particles<double>&, double, double);
-template bool apply_event<long double>(const DecodedEvent<long double>&, Particles<long double>&, long double,
-                                       long double);
 
 }  // namespace ede

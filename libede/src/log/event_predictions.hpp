@@ -62,13 +62,11 @@ struct EventPhysics {
 
 // Post-collision velocities of pair (i, j) at time t, as Engine::resolve_pair computes them: both records
 // brought to t, the separation with the nearest periodic image, the collision rule with 1 + xi of the
-// pair (2 when the TC model made it elastic).
+// pair (2 when the TC model made it elastic). `a` and `b` are the records of i and j already brought to t
+// (advance_disk): replay keeps them and stores them with the new velocities instead of advancing twice.
 template <class T>
 inline void predict_pair_velocities(const EventPhysics<T>& ph, const Particles<T>& p, std::int32_t i,
-                                    std::int32_t j, T t, bool tc_elastic, T v[4]) {
-  Disk<T> a = p.disk[std::size_t(i)], b = p.disk[std::size_t(j)];
-  advance_disk(a, t, ph.gx, ph.gy);
-  advance_disk(b, t, ph.gx, ph.gy);
+                                    std::int32_t j, const Disk<T>& a, const Disk<T>& b, bool tc_elastic, T v[4]) {
   T dx = b.x - a.x, dy = b.y - a.y;
   if (ph.periodic) {
     if (dx > ph.half_lx) dx -= ph.lx; else if (dx < -ph.half_lx) dx += ph.lx;
@@ -77,6 +75,15 @@ inline void predict_pair_velocities(const EventPhysics<T>& ph, const Particles<T
   const T opx = tc_elastic ? T(2) : ph.pair_one_plus_xi(p.species[std::size_t(i)], p.species[std::size_t(j)]);
   v[0] = a.vx, v[1] = a.vy, v[2] = b.vx, v[3] = b.vy;
   collide_pair(dx, dy, p.mass[std::size_t(i)], p.mass[std::size_t(j)], opx, v[0], v[1], v[2], v[3]);
+}
+
+template <class T>
+inline void predict_pair_velocities(const EventPhysics<T>& ph, const Particles<T>& p, std::int32_t i,
+                                    std::int32_t j, T t, bool tc_elastic, T v[4]) {
+  Disk<T> a = p.disk[std::size_t(i)], b = p.disk[std::size_t(j)];
+  advance_disk(a, t, ph.gx, ph.gy);
+  advance_disk(b, t, ph.gx, ph.gy);
+  predict_pair_velocities(ph, p, i, j, a, b, tc_elastic, v);
 }
 
 // Velocity after disk i hits `wall` at time t (Engine::resolve_wall). With xi_w = 1 collide_wall computes

@@ -163,7 +163,8 @@ Result<std::unique_ptr<Replay<T>>> Replay<T>::create(std::shared_ptr<const LogRe
 template <class T>
 struct Replay<T>::Cursor {
   std::unique_ptr<ChunkDecoder<T>> decoder;
-  std::optional<DecodedEvent<T>> pending;
+  DecodedEvent<T> next;  // decoded in place (no copy per event); valid while `pending`
+  bool pending = false;
 };
 
 template <class T>
@@ -245,24 +246,34 @@ Status Replay<T>::advance(std::uint64_t target_event, const T* until_time,
           if (Status s = c.decoder->check_consumed(); !s) return Error{log_->path() + ": " + s.error().message};
         if (Status s = open_chunk(); !s) return s;
       }
-      DecodedEvent<T> e;
-      if (Status s = c.decoder->next(state_, e); !s) return Error{log_->path() + ": " + s.error().message};
-      c.pending = e;
+      if (!c.decoder->decode(state_, c.next)) return Error{log_->path() + ": " + c.decoder->error_message()};
+      c.pending = true;
     }
-    const DecodedEvent<T>& e = *c.pending;
+    const DecodedEvent<T>& e = c.next;
     if (until_time && e.time > *until_time) break;
+    if (!f) {  // a seek: apply only
+      if (!apply_event(e, state_, lx_, ly_)) return non_finite_error(e.index);
+      ++applied_;
+      last_event_time_ = e.time;
+      c.pending = false;
+      continue;
+    }
     ReplayedEvent<T> out{e.index, e.time, e.kind, e.i, e.j, e.vix, e.viy, e.vjx, e.vjy};
-    if (f) before_event(e, out);
-    if (!apply_event(e, state_, lx_, ly_))
-      return Error{log_->path() + ": event " + std::to_string(e.index) +
-                   " leaves a disk at a non-finite position or time: the log is corrupted"};
+    before_event(e, out);
+    if (!apply_event(e, state_, lx_, ly_)) return non_finite_error(e.index);
     ++applied_;
     last_event_time_ = e.time;
-    if (f) after_event(e, out);
-    c.pending.reset();
-    if (f && !f(out)) break;
+    after_event(e, out);
+    c.pending = false;
+    if (!f(out)) break;
   }
   return Ok{};
+}
+
+template <class T>
+Error Replay<T>::non_finite_error(std::uint64_t event) const {
+  return Error{log_->path() + ": event " + std::to_string(event) +
+               " leaves a disk at a non-finite position or time: the log is corrupted"};
 }
 
 // The velocities just before an event, and the positions at it (after applying), for callers that look

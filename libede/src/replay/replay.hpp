@@ -67,6 +67,7 @@ class Replay {
   Status advance(std::uint64_t target_event, const T* until_time,
                  const std::function<bool(const ReplayedEvent<T>&)>& f);
 
+  Error non_finite_error(std::uint64_t event) const;
   struct Cursor;  // the chunk being decoded and the next decoded event (replay.cpp)
   void before_event(const DecodedEvent<T>& e, ReplayedEvent<T>& out) const;
   void after_event(const DecodedEvent<T>& e, ReplayedEvent<T>& out) const;
