@@ -47,6 +47,10 @@ struct Header {
   # for replay's predictions of post-collision velocities (FORMAT.md, "Predictions").
   pairOnePlusXi @23 :Data;        # S x S scalars, S = max(1, speciesNames): 1 + xi of species pair (a, b) at a S + b
   wallRestitution @24 :Data;      # 4 scalars: xi of the left, right, bottom and top walls
+  # The run id (FORMAT.md, "Run id"): a digest of this header without the build's fields; every chunk and
+  # keyframe repeats it, so records of another run spliced behind this header are refused. 0: not recorded
+  # (logs written before it), then nothing is checked.
+  runId @25 :UInt32;
 }
 
 # A run of consecutive logged events, stored as columns (FORMAT.md, "Chunk columns").
@@ -60,6 +64,7 @@ struct Chunk {
   velocitiesRaw @6 :Data;        # encoding 1, pair: v_i' as raw scalars, byte-plane shuffled; encoding 2: empty
   velocityResiduals @7 :Data;    # encoding 1: pair v_j' against momentum, wall v' against reflection;
                                  # encoding 2: pair v_i', v_j' and wall v' against the collision rules
+  runId @8 :UInt32;              # the header's runId (0 in logs written before it)
 }
 
 # The full state after a given number of logged events.
@@ -78,6 +83,7 @@ struct Keyframe {
   nextSample @11 :UInt64;       # resumable: samples already taken
   nextAction @12 :UInt64;       # resumable: actions already done
   sameTimeEvents @13 :UInt64;   # resumable: the stall detector's count
+  runId @14 :UInt32;            # the header's runId (0 in logs written before it)
 }
 
 # The last record: where every chunk and keyframe is, and how the run ended.

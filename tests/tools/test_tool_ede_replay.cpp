@@ -306,8 +306,16 @@ TEST_CASE("ede-replay verify checks the keyframes a resume would read", "[tool][
   // rebuild does not.
   const std::string options =
       " --set species.gas.count=200 --set stop.time=0.3 --set engine.rebuild_interval=1500" + kSmallRecords;
-  const std::string a = make_log("verify-sample-a.ede", "examples/gas.toml", options + " --set sampling.interval=0.05");
-  const std::string b = make_log("verify-sample-b.ede", "examples/gas.toml", options + " --set sampling.interval=0.07");
+  // In format version 1, which has no run ids (FORMAT.md "Run id"): a version 2 splice is refused at its
+  // first foreign record before any comparison (tested below).
+  const auto as_v1 = [&](const std::string& log) {
+    const std::string v1 = log.substr(0, log.size() - 4) + "-v1.ede";
+    std::remove(v1.c_str());
+    REQUIRE(replay("convert " + log + " -o " + v1 + " --format-version 1", "verify-convert").status == 0);
+    return v1;
+  };
+  const std::string a = as_v1(make_log("verify-sample-a.ede", "examples/gas.toml", options + " --set sampling.interval=0.05"));
+  const std::string b = as_v1(make_log("verify-sample-b.ede", "examples/gas.toml", options + " --set sampling.interval=0.07"));
   const ToolRun same_events = replay("diff " + a + " " + b, "verify-sample-diff");
   CHECK(same_events.status == 0);
   const auto ra = open_reader(a), rb = open_reader(b);
@@ -327,6 +335,57 @@ TEST_CASE("ede-replay verify checks the keyframes a resume would read", "[tool][
   const ToolRun own = replay("verify -q " + a, "verify-sample-own");
   CHECK(own.status == 0);
   CHECK(own.out.find(std::to_string(ra->keyframes().size()) + " keyframes") != std::string::npos);
+}
+
+TEST_CASE("a log spliced from two runs is refused at the first record of the other run", "[tool][ede-replay]") {
+  // Records of one run behind the header of another, every checksum valid: each chunk and keyframe repeats
+  // the header's run id (FORMAT.md "Run id"), so every reader stops at the first foreign record, naming it.
+  const std::string a = make_log("splice-a.ede", "examples/scenes/periodic.toml", kPeriodic + " --set seed=11");
+  const std::string b = make_log("splice-b.ede", "examples/scenes/periodic.toml", kPeriodic + " --set seed=12");
+  const auto ra = open_reader(a), rb = open_reader(b);
+  REQUIRE(ra->header().run_id != 0);
+  REQUIRE(rb->header().run_id != 0);
+  REQUIRE(ra->header().run_id != rb->header().run_id);
+  REQUIRE(ra->keyframes().size() >= 2);
+  // b up to its second keyframe (both at the same event: the keyframe interval is fixed), then a's
+  // records from its second keyframe on; no index (the reader walks the records, as after a kill).
+  REQUIRE(rb->keyframes().size() >= 2);
+  REQUIRE(ra->keyframes()[1].first_event == rb->keyframes()[1].first_event);
+  const std::uint64_t cut = rb->keyframes()[1].offset, from = ra->keyframes()[1].offset;
+  const std::string spliced = test_file("spliced.ede");
+  write_bytes(spliced, read_file(b).substr(0, cut) + read_file(a).substr(from, end_of_records(*ra) - from));
+  // The state at the end seeks to the last keyframe, a foreign one past the cut, and names it.
+  // Messages are wrapped to the terminal's width: compare them as one line.
+  const auto flat = [](std::string text) {
+    std::string out;
+    for (const char c : text)
+      if (!(c == '\n' || (c == ' ' && !out.empty() && out.back() == ' '))) out += c;
+      else if (out.empty() || out.back() != ' ') out += ' ';
+    return out;
+  };
+  const ToolRun state = replay(spliced + " --at end", "spliced-state");
+  INFO(state.out << state.err);
+  CHECK(state.status == 1);
+  REQUIRE(flat(state.err).find("(keyframe at byte ") != std::string::npos);
+  CHECK(number_after(flat(state.err), "(keyframe at byte ") >= cut);
+  CHECK(flat(state.err).find("belongs to another run") != std::string::npos);
+  // Listing every event refuses it too: replaying from the start, it meets the first chunk after the cut.
+  const ToolRun events = replay("events " + spliced, "spliced-events");
+  INFO(events.err);
+  CHECK(events.status == 1);
+  REQUIRE(flat(events.err).find("(chunk at byte ") != std::string::npos);
+  CHECK(number_after(flat(events.err), "(chunk at byte ") > cut);
+  CHECK(flat(events.err).find("belongs to another run") != std::string::npos);
+  const ToolRun verify = replay("verify -q " + spliced, "spliced-verify");
+  INFO(verify.out << verify.err);
+  CHECK(verify.status == 1);
+  CHECK(flat(verify.out + verify.err).find("belongs to another run") != std::string::npos);
+  // Before the foreign records the log reads as b: the state at b's first keyframe is exact.
+  const std::string t_kf = std::to_string(rb->keyframes()[1].time_first * 0.5);
+  const ToolRun early = replay(spliced + " --at " + t_kf, "spliced-early");
+  const ToolRun own = replay(b + " --at " + t_kf, "spliced-own");
+  CHECK(early.status == 0);
+  CHECK(early.out == own.out);
 }
 
 TEST_CASE("ede-replay never crashes on a log with a flipped bit in a chunk", "[tool][ede-replay]") {

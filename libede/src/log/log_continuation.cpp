@@ -11,6 +11,7 @@ LogContinuation continuation_from(const LogReader& log, std::size_t keyframe) {
   LogContinuation c;
   c.cut_offset = kf.offset + logfmt::kRecordHeaderSize + kf.payload_size;
   c.events_before = kf.first_event;
+  c.run_id = log.header().run_id;
   for (const auto* list : {&log.chunks(), &log.keyframes()})
     for (const LogRecordRef& e : *list)
       if (e.offset <= kf.offset)

@@ -189,6 +189,7 @@ Status LogReader::read_header_record(std::uint64_t offset, std::uint64_t payload
     out.chunk_events = h.getChunkEvents();
     out.keyframe_interval = h.getKeyframeInterval();
     out.rebuild_interval = h.getRebuildInterval();
+    out.run_id = h.getRunId();
     const auto radius = h.getRadius(), mass = h.getMass();
     out.radius.assign(radius.begin(), radius.end());
     out.mass.assign(mass.begin(), mass.end());

@@ -30,6 +30,7 @@ struct LogHeaderInfo {
   BoundaryKind boundary = BoundaryKind::Walls;
   std::uint32_t chunk_events = 0;
   std::uint64_t keyframe_interval = 0, rebuild_interval = 0;
+  std::uint32_t run_id = 0;  // log/run_id.hpp; 0: not recorded (older logs), records are not checked
   std::vector<unsigned char> radius, mass;  // raw scalars
   std::vector<std::uint32_t> species;
   double initial_energy = 0;

@@ -9,6 +9,7 @@
 #include "ede_log.capnp.h"
 #include "log/chunk_codec.hpp"
 #include "log/log_messages.hpp"
+#include "log/run_id.hpp"
 
 namespace ede {
 
@@ -30,7 +31,9 @@ Status count_chunk(const LogReader& log, const LogRecordRef& ref, LogKindCounts&
   const std::string where = log.path() + " (chunk at byte " + std::to_string(ref.offset) + ")";
   try {
     capnp::FlatArrayMessageReader message(as_words(words.value()), reader_options(words.value()));
-    const auto kinds = message.getRoot<logschema::Chunk>().getKinds();
+    const auto chunk = message.getRoot<logschema::Chunk>();
+    if (Status s = check_run_id(log, chunk.getRunId(), ref.offset, "chunk"); !s) return s;
+    const auto kinds = chunk.getKinds();
     if (kinds.size() != ref.count)
       return Error{where + ": its kinds column holds " + std::to_string(kinds.size()) + " bytes for " +
                    std::to_string(ref.count) + " events"};

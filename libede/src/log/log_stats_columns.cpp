@@ -5,6 +5,7 @@
 
 #include <memory>
 
+#include "log/run_id.hpp"
 #include "log/log_column_sizes.hpp"
 #include "ede_log.capnp.h"
 #include "log/log_messages.hpp"
@@ -34,6 +35,7 @@ Status add_chunk(const LogReader& log, const LogRecordRef& ref, ZSTD_CCtx* cctx,
   try {
     capnp::FlatArrayMessageReader message(as_words(words.value()), reader_options(words.value()));
     const auto chunk = message.getRoot<logschema::Chunk>();
+    if (Status s = check_run_id(log, chunk.getRunId(), ref.offset, "chunk"); !s) return s;
     const capnp::Data::Reader cols[kColumns] = {chunk.getTimes(),         chunk.getKinds(),
                                                 chunk.getDisks(),         chunk.getPartners(),
                                                 chunk.getVelocitiesRaw(), chunk.getVelocityResiduals()};

@@ -8,6 +8,7 @@
 // those of coding on the loop. Rejected: coding on the event loop (measured: at N = 1e4, log format 2's
 // predictions and the replayed state's updates took the logging overhead from 8-14 % to 34 %).
 #include "log/log_writer.hpp"
+#include "log/run_id.hpp"
 
 #include <capnp/message.h>
 #include <capnp/serialize.h>
@@ -123,6 +124,7 @@ struct ChunkCoder {
   std::uint32_t format_version = 2;
   ChunkEncoder<T> chunk{mass, format_version, physics};
   Particles<T> replayed;
+  std::uint32_t run_id = 0;  // the header's (log/run_id.hpp), repeated in every chunk
 
   explicit ChunkCoder(std::uint32_t version) : format_version(version) {}
 
@@ -134,6 +136,7 @@ struct ChunkCoder {
     auto b = message.initRoot<logschema::Chunk>();
     b.setFirstEvent(first_event);
     b.setCount(chunk.count());
+    b.setRunId(run_id);
     set_data(b.initTimes(std::uint32_t(c.times.size())), c.times);
     set_data(b.initKinds(std::uint32_t(c.kinds.size())), c.kinds);
     set_data(b.initDisks(std::uint32_t(c.disks.size())), c.disks);
@@ -172,6 +175,7 @@ struct LogWriter<T>::Impl {
   std::vector<LogContinuation::Entry> kept;  // entries of a continued log's first part (offsets known)
   std::vector<Pending> pending;
   std::uint64_t bytes = 0;
+  std::uint32_t run_id = 0;  // log/run_id.hpp: the header's digest, or a continued log's
   bool finished = false;
 
   Impl(const std::string& path, const LogRunInfo& r, const LogSettings& s, std::uint64_t start, int level)
@@ -242,6 +246,10 @@ struct LogWriter<T>::Impl {
       set_data(h.initWallRestitution(std::uint32_t(4 * kScalarWidth<T>)),
                raw_scalars(std::vector<T>(physics.xi_wall, physics.xi_wall + 4)));
     }
+    // Set before the first chunk is submitted: the worker reads coder.run_id only after that. Format
+    // version 1 predates run ids and keeps its bytes (its records carry 0: not checked).
+    if (settings.format_version >= 2) run_id = coder.run_id = run_id_of(h.asReader());
+    h.setRunId(run_id);
     logfmt::RecordHeader rh;
     rh.kind = logfmt::RecordKind::Header;
     out.submit(rh, to_bytes(message));
@@ -270,6 +278,7 @@ struct LogWriter<T>::Impl {
     capnp::MallocMessageBuilder message;
     auto k = message.initRoot<logschema::Keyframe>();
     k.setEventsBefore(logged);
+    k.setRunId(run_id);
     set_data(k.initTime(kScalarWidth<T>), one_scalar(time));
     k.setResumable(rebuild != nullptr);
     const auto column = [&](auto value_of) { return scalar_column<T>(n, value_of); };
@@ -361,6 +370,7 @@ Result<std::unique_ptr<LogWriter<T>>> LogWriter<T>::create(const std::string& pa
   if (continuation) {
     impl->logged = continuation->events_before;
     impl->kept = continuation->entries;
+    impl->run_id = impl->coder.run_id = continuation->run_id;
   } else {
     std::vector<unsigned char> header(logfmt::kFileHeaderSize);
     logfmt::encode_file_header(header.data(), settings.format_version);

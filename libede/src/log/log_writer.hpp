@@ -60,6 +60,7 @@ struct LogRunInfo {
 struct LogContinuation {
   std::uint64_t cut_offset = 0;        // the file is cut here (end of the resumable keyframe's record)
   std::uint64_t events_before = 0;     // logged events before the keyframe
+  std::uint32_t run_id = 0;            // the log's run id (log/run_id.hpp), repeated in the new records
   struct Entry {
     std::uint8_t kind;
     std::uint64_t offset, first_event, count;

@@ -15,6 +15,7 @@
 // `full` skips step 2 and starts at event 0: every record is read (a damaged one is an error), still
 // without replaying identical chunks.
 #include <algorithm>
+#include <cstring>
 #include <map>
 #include <memory>
 #include <optional>
@@ -22,7 +23,14 @@
 #include <string>
 #include <vector>
 
+#include <capnp/message.h>
+#include <capnp/serialize.h>
+#include <kj/exception.h>
+
 #include "core/scalar_dispatch.hpp"
+#include "ede_log.capnp.h"
+#include "log/log_framing.hpp"
+#include "log/log_messages.hpp"
 #include "ede/log.hpp"
 #include "replay/event_compare.hpp"
 #include "replay/log_impl.hpp"
@@ -97,12 +105,36 @@ std::vector<CommonKeyframe> common_keyframes(const LogReader& a, const LogReader
   return out;
 }
 
+// A chunk or keyframe message with its run id cleared, in canonical form: two runs with different run ids
+// (e.g. another scene text) can still hold identical records, and those must compare equal.
+template <class Struct>
+kj::Array<capnp::word> without_run_id(const std::vector<std::uint64_t>& words) {
+  capnp::FlatArrayMessageReader message(as_words(words), reader_options(words));
+  capnp::MallocMessageBuilder copy;
+  copy.setRoot(message.getRoot<Struct>());
+  auto root = copy.getRoot<Struct>();
+  root.setRunId(0);
+  return capnp::canonicalize(root.asReader());
+}
+
 Result<bool> same_record(const LogReader& a, const LogRecordRef& ra, const LogReader& b, const LogRecordRef& rb) {
   auto wa = a.load_message(ra.offset, ra.payload_size);
   if (!wa) return wa.error();
   auto wb = b.load_message(rb.offset, rb.payload_size);
   if (!wb) return wb.error();
-  return wa.value() == wb.value();
+  if (wa.value() == wb.value()) return true;
+  if (a.header().run_id == b.header().run_id) return false;  // the ids cannot be the difference
+  try {
+    const bool chunk = ra.kind == std::uint8_t(logfmt::RecordKind::Chunk);
+    const kj::Array<capnp::word> ca = chunk ? without_run_id<logschema::Chunk>(wa.value())
+                                            : without_run_id<logschema::Keyframe>(wa.value());
+    const kj::Array<capnp::word> cb = chunk ? without_run_id<logschema::Chunk>(wb.value())
+                                            : without_run_id<logschema::Keyframe>(wb.value());
+    return ca.size() == cb.size() && std::memcmp(ca.begin(), cb.begin(), ca.size() * sizeof(capnp::word)) == 0;
+  } catch (const kj::Exception& e) {
+    return Error{a.path() + " or " + b.path() + ": a record is malformed (" + e.getDescription().cStr() + ")",
+                 ErrorKind::Corrupt};
+  }
 }
 
 // Identical if some keyframe of A at that event equals some keyframe of B there (a rebuild keyframe and

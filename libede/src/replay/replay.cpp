@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "core/number_text.hpp"
+#include "log/run_id.hpp"
 #include "log/chunk_codec.hpp"
 #include "ede_log.capnp.h"
 #include "log/log_messages.hpp"
@@ -80,6 +81,7 @@ Result<KeyframeData<T>> read_keyframe(const LogReader& log, const LogRecordRef& 
   try {
     capnp::FlatArrayMessageReader message(as_words(words.value()), reader_options(words.value()));
     const auto kf = message.getRoot<logschema::Keyframe>();
+    if (Status s = check_run_id(log, kf.getRunId(), ref.offset, "keyframe"); !s) return s.error();
     k.events_before = kf.getEventsBefore();
     const auto time = kf.getTime();
     if (time.size() != kScalarWidth<T>) return Error{where + ": malformed time"};
@@ -217,6 +219,7 @@ Status Replay<T>::open_chunk() {
     const auto chunk = message.getRoot<logschema::Chunk>();
     if (chunk.getFirstEvent() != ref.first_event || chunk.getCount() != ref.count)
       return Error{where + ": its event range disagrees with its record header"};
+    if (Status s = check_run_id(*log_, chunk.getRunId(), ref.offset, "chunk"); !s) return s;
     const capnp::Data::Reader cols[] = {chunk.getTimes(),    chunk.getKinds(),         chunk.getDisks(),
                                         chunk.getPartners(), chunk.getVelocitiesRaw(), chunk.getVelocityResiduals()};
     const unsigned char* ptrs[6];
