@@ -8,6 +8,9 @@
 //    species are then reordered along a Hilbert curve (positions quantised to 2^32 x 2^32 over the box,
 //    ties by placement order) so that disks near in space are near in memory, which the engine's cell
 //    lists and caches like; explicit species keep the order given (a velocity list refers to it).
+// 3b. With [grow]: the radii were scaled first so that placement works at a low packing fraction; the
+//    placed disks of every species then grow together (setup/grow.hpp) and each species is re-ordered
+//    along the curve. Velocities are drawn after this, so growth changes no species' random stream.
 // 4. Masses and velocities in the final order; then check_initial_state on the whole result.
 // Each stream draws radii, then positions, then velocities, and depends on nothing of later species (the
 // curve order uses the box, not the grid, whose cell size depends on every species): adding a species
