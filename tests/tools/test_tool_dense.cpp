@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "tool_runner.hpp"
@@ -21,6 +22,29 @@ TEST_CASE("ede-sim grows the bidisperse example to jamming and reports phi_J", "
   CHECK(r.out.find("(jammed: Z = ") != std::string::npos);
   const auto at = r.out.find("to 0.8");
   CHECK(at != std::string::npos);
+}
+
+TEST_CASE("a grown state is the log's first keyframe and a later scene starts from it", "[tools][grow]") {
+  const std::string log = sim_log(source_path("examples/dense/grow-0.72.toml"),
+                                  " --set species.disks.count=300 --set stop.collisions_per_particle=5",
+                                  temp_path("grown.ede"), "grown");
+  const ToolRun p = run_tool("ede-replay", "state " + log + " --at 0", "grown-state");  // the first keyframe
+  INFO(p.err);
+  REQUIRE(p.status == 0);
+  const auto rows = lines(p.out);
+  REQUIRE(rows.size() == 301);
+  double area = 0;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const double r = std::stod(csv_fields(rows[i])[6]);
+    area += 3.14159265358979323846 * r * r;
+  }
+  CHECK(std::abs(area / 0.72 - 1) < 1e-12);  // the unit box, grown exactly to 0.72
+  const std::string scene = temp_path("from-grown.toml");
+  std::ofstream(scene) << "[box]\nboundary = \"periodic\"\n[start]\nfrom = \"" << log
+                       << "\"\nat = 0\n[stop]\ncollisions_per_particle = 2\n";
+  const ToolRun r = run_tool("ede-sim", scene + " -q", "from-grown");
+  INFO(r.err);
+  CHECK(r.status == 0);
 }
 
 TEST_CASE("ede-sweep runs the small equation-of-state sweep and draws Z against Kolafa-Rottner", "[tools][grow]") {
