@@ -153,6 +153,13 @@ TEST_CASE("grow: bad input is refused naming the key and the fix", "[setup][grow
   REQUIRE_FALSE(bad_rate);
   CHECK(bad_rate.error().message.find("grow.rate") != std::string::npos);
 
+  auto slow = parse_scene_text(scene_text("periodic", kMono, "packing_fraction = 0.7\nrate = 1e-6\n"), "g.toml");
+  REQUIRE_FALSE(slow);
+  CHECK(slow.error().message.find("grow.rate") != std::string::npos);
+  auto huge = parse_scene_text(scene_text("periodic", kMono, "pressure = 1e13\n"), "g.toml");
+  REQUIRE_FALSE(huge);
+  CHECK(huge.error().message.find("grow.pressure") != std::string::npos);
+
   auto typo = parse_scene_text(scene_text("periodic", kMono, "packing = 0.7\n"), "g.toml");
   REQUIRE_FALSE(typo);
   CHECK(typo.error().message.find("grow.packing: unknown key") != std::string::npos);

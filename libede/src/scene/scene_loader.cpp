@@ -409,9 +409,11 @@ std::optional<GrowSpec> read_grow(const Reader& top, const Scene& scene) {
   GrowSpec out;
   out.packing_fraction = g.number("packing_fraction", Bounds::open(0, 1),
                                   "give the packing fraction to grow to, e.g. packing_fraction = 0.72");
-  out.pressure = g.number("pressure", Bounds::open(1, std::numeric_limits<double>::infinity()),
+  // Z above ~1e12 would need gaps below double's resolution near jamming: the growth could not end.
+  out.pressure = g.number("pressure", Bounds{1, 1e12, true, false},
                           "give the reduced pressure Z = PA/(NkT) at which the disks count as jammed, e.g. 1e6");
-  out.rate = g.number("rate", Bounds::open(0, 1), "give a growth rate such as 1e-3 (fast) or 1e-5 (slow)")
+  // Slower than 1e-5 needs ~10^6 collisions per disk and more: hours for 10^4 disks.
+  out.rate = g.number("rate", Bounds{1e-5, 1, false, true}, "give a growth rate such as 1e-2 (fast) or 1e-4 (slow)")
                  .value_or(out.rate);
   if (!out.packing_fraction && !out.pressure)
     g.fail_here("neither packing_fraction nor pressure is given, so the growth would never stop",

@@ -383,9 +383,14 @@ Result<GrowResult> grow_disks(const GrowInput& in) {
   const double t_end = (a_max - 1) / g.adot();
   const std::uint64_t interval = std::max<std::uint64_t>(g.size(), 16);
   std::uint64_t next_measure = interval;
+  // A safety net, never reached by the allowed rates (slowest, 1e-5: ~6e5 events per disk to 0.72).
+  const std::uint64_t max_events = 4000000 * std::uint64_t(g.size()) + 100000000;
   bool ended = false;
   while (!ended) {
     if (!g.step(t_end)) break;
+    if (g.events() > max_events)
+      return Error{"the growth took more than " + std::to_string(max_events) +
+                   " events without reaching its end; give a faster grow.rate or a lower grow.pressure"};
     if (g.pair_collisions() >= next_measure) {
       next_measure = g.pair_collisions() + interval;
       out.z = g.measure_and_rescale();
