@@ -18,7 +18,8 @@ from .export import export_gsd, export_xyz, frame_times
 from .log import EVENT_KINDS, Log, open
 from .run import Simulation, load_scene, resume, run
 from .state import State
-from .structure import (bond_order, contact_values, enskog_diffusion, henderson_contact, msd, pair_correlation,
+from .structure import (bond_order, contact_values, enskog_diffusion, henderson_contact, kolafa_rottner_contact,
+                        kolafa_rottner_z, msd, pair_correlation,
                         structure_factor, vacf)
 
 __version__ = _ede.version()
@@ -27,4 +28,5 @@ __all__ = ["CorruptLogError", "Error", "InvalidError", "IoError", "UnsupportedEr
            "collision_series", "crater", "distribution", "energy_series", "pressure", "species_stats",
            "export_gsd", "export_xyz", "frame_times", "EVENT_KINDS", "Log", "open", "Simulation",
            "load_scene", "resume", "run", "State", "bond_order", "contact_values", "enskog_diffusion",
-           "henderson_contact", "msd", "pair_correlation", "structure_factor", "vacf"]
+           "henderson_contact", "kolafa_rottner_contact", "kolafa_rottner_z", "msd", "pair_correlation",
+           "structure_factor", "vacf"]

@@ -5,7 +5,7 @@ from . import _ede
 from .analysis import _log, _report
 
 __all__ = ["pair_correlation", "contact_values", "structure_factor", "bond_order", "msd", "vacf",
-           "enskog_diffusion", "henderson_contact"]
+           "enskog_diffusion", "henderson_contact", "kolafa_rottner_z", "kolafa_rottner_contact"]
 
 
 def _species(log, name):
@@ -60,3 +60,13 @@ def enskog_diffusion(n, sigma, g_contact, kT, mass):
 def henderson_contact(phi):
     """Henderson's g(sigma) = (1 - 7 phi / 16) / (1 - phi)^2."""
     return _ede.henderson_contact(phi)
+
+
+def kolafa_rottner_z(phi):
+    """Kolafa and Rottner's Z(phi) of the hard-disk fluid (Mol. Phys. 104, 3435 (2006)); NaN above 0.7069."""
+    return _ede.kolafa_rottner_z(phi)
+
+
+def kolafa_rottner_contact(phi):
+    """g(sigma) = (Z - 1) / (2 phi) from Kolafa and Rottner's Z; NaN above phi = 0.7069."""
+    return _ede.kolafa_rottner_contact(phi)

@@ -106,6 +106,8 @@ void bind_structure(py::module_& m) {
   });
   m.def("enskog_diffusion", &enskog_diffusion);
   m.def("henderson_contact", &henderson_contact_value);
+  m.def("kolafa_rottner_z", &kolafa_rottner_z);
+  m.def("kolafa_rottner_contact", &kolafa_rottner_contact_value);
 }
 
 }  // namespace ede::python

@@ -1,6 +1,7 @@
 """Structure and transport from Python give the numbers ede-stats gr, msd and vacf give (the same library
 functions, CSV with exact digits), and refuse what the library refuses."""
 import csv
+import math
 
 import numpy as np
 import pytest
@@ -51,3 +52,6 @@ def test_bond_order_and_structure_factor_shapes(gas_log):
     s = ede.structure_factor(log, 200.0, shells=10)
     assert s.kx.shape == s.s.shape and np.all(s.s >= 0)
     assert ede.henderson_contact(0.0) == 1.0
+    assert abs(ede.kolafa_rottner_z(0.5) / ((1 + 0.5 ** 2 / 8) / 0.25) - 1) < 0.005
+    assert ede.kolafa_rottner_contact(0.0) == 1.0
+    assert math.isnan(ede.kolafa_rottner_z(0.72))

@@ -95,6 +95,20 @@ positions = [[0.02, 0.5], [0.5, 0.5]]
 time = 1.0
 )";
 
+// A hexagon: one disk (r = 0.1) at (0.5, 0.5) with six at distance 0.25 at angles 0, 60, ..., 300 degrees:
+// the centre's |psi6| is 1 (to round-off), the outer ones' less.
+const char* const kHexagonScene = R"([box]
+size = [2.0, 1.0]
+[[species]]
+name = "hex"
+radius = 0.1
+[species.placement]
+kind = "explicit"
+positions = [[0.5, 0.5], [0.75, 0.5], [0.625, 0.7165063509461096], [0.37500000000000006, 0.7165063509461097], [0.25, 0.5], [0.3749999999999999, 0.2834936490538904], [0.625, 0.28349364905389035]]
+[stop]
+time = 1.0
+)";
+
 std::string make_log(const std::string& name, const char* scene_text) {
   const std::string scene = temp_path("render-" + name + ".toml");
   std::ofstream(scene) << scene_text;
@@ -203,6 +217,20 @@ TEST_CASE("ede-render --color displacement: resting disks at the map's bottom, t
   CHECK(image.rgb(80, 140) == kNotMoved);  // the bed at rest
   CHECK(image.rgb(160, 140) == kNotMoved);
   CHECK(image.rgb(260, 80) == kMarked);    // the ball, a one-disk species: marked, blue
+}
+
+TEST_CASE("ede-render --color psi6: a perfect hexagonal neighbourhood at the map's top, others below",
+          "[tool][ede-render]") {
+  const std::string log = make_log("psi6", kHexagonScene);
+  const std::string png = temp_path("render-psi6.png");
+  const ToolRun r = render(log + " --at 0 --width 400 --color psi6 -o " + png, "psi6");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const Png image(png);
+  CHECK(image.rgb(100, 100) == 0x800026);  // the centre, |psi6| = 1: the map's top (docs/pictures.md)
+  const unsigned outer = image.rgb(150, 100);  // (0.75, 0.5)
+  CHECK(outer != 0x800026);
+  CHECK(outer != kBackground);
 }
 
 TEST_CASE("ede-render writes SVG with one path per disk", "[tool][ede-render]") {

@@ -92,7 +92,7 @@ void draw_bar(cairo_t* cr, const ColourBar& bar, const Style& st, double x, doub
   cairo_set_line_width(cr, 1);
   cairo_stroke(cr);
   for (int k = 0; k <= 2; ++k) {
-    const std::string t = k == 0 ? "0" : tools::brief(bar.max * k / 2, 3) + (k == 2 ? "+" : "");
+    const std::string t = k == 0 ? "0" : tools::brief(bar.max * k / 2, 3) + (k == 2 && bar.open_top ? "+" : "");
     const double tx = x + w * k / 2, tw = text_width(cr, t);
     cairo_new_path(cr);
     cairo_move_to(cr, tx, gy + gh);

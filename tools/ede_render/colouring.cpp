@@ -85,6 +85,12 @@ void by_displacement(const Frame& f, const std::vector<bool>& marked, double max
   add_marked_entry(f, marked, marked_colour(), c);
 }
 
+// psi6: |psi6_j| in [0, 1] on the sequential map; 1 is a perfect hexagonal neighbourhood.
+void by_psi6(const Frame& f, Colouring& c) {
+  for (std::size_t i = 0; i < f.size(); ++i) c.fill.push_back(displacement_colour(i < f.psi6.size() ? f.psi6[i] : 0));
+  c.bar = ColourBar{1, "|psi6|, local bond order", false};
+}
+
 }  // namespace
 
 Rgb species_colour(std::size_t species) {
@@ -123,6 +129,7 @@ Colouring colour_disks(const Frame& f, ColourBy by, const std::vector<bool>& mar
       add_marked_entry(f, marked, Rgb{0.85, 0.85, 0.85}, c);
       break;
     case ColourBy::Displacement: by_displacement(f, marked, max_displacement, c); break;
+    case ColourBy::Psi6: by_psi6(f, c); break;
   }
   return c;
 }

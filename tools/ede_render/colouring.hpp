@@ -8,7 +8,9 @@
 //   displacement  distance from the initial position on a sequential map (pale yellow -> dark red,
 //                 ColorBrewer YlOrRd, readable in grey and with colour-vision deficiencies); a colour bar.
 //                 Its top is the 95th percentile of the unmarked disks' displacements: a few far-flung
-//                 ejecta would otherwise leave the whole bed pale; larger values take the top colour.
+//                 ejecta would otherwise leave the whole bed pale; larger values take the top colour;
+//   psi6          the local bond order |psi6_j| (ede::psi6: nearest six neighbours) on the same map from 0
+//                 to 1: ordered (hexatic, crystalline) patches dark, disordered liquid pale; a colour bar.
 // Marked disks (a projectile) get an outline when drawn; they keep their species or speed colour, and in
 // displacement colouring are blue, outside the map. Which disks are marked, their speed classes and the
 // scale's top are the library's (ede/analysis.hpp, "Frames"), so the live view colours alike; the colours
@@ -47,9 +49,10 @@ struct LegendEntry {
   Swatch swatch = Swatch::Disk;
 };
 
-struct ColourBar {  // displacement: the map from 0 to max
+struct ColourBar {  // displacement and psi6: the map from 0 to max
   double max = 1;
   std::string title;
+  bool open_top = true;  // the top label says "max+" (larger values take the top colour)
 };
 
 struct Colouring {

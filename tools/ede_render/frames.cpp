@@ -1,6 +1,8 @@
 // LogFrames; see frames.hpp.
 #include "frames.hpp"
 
+#include <complex>
+
 #include "open_log.hpp"
 
 namespace ede::render {
@@ -15,10 +17,17 @@ Result<LogFrames> LogFrames::open(const std::string& path, const std::string& sp
   return LogFrames(std::move(log).value(), std::move(initial).value(), index.value());
 }
 
-Result<Frame> LogFrames::at(const tools::TimeOption& t) {
+Result<Frame> LogFrames::at(const tools::TimeOption& t, bool with_psi6) {
   auto state = t.end ? log_.state_at_end() : log_.state_at(t.t);
   if (!state) return state.error();
-  return disk_frame(state.value(), initial_, species_);
+  Frame f{disk_frame(state.value(), initial_, species_), {}};
+  if (with_psi6) {
+    const State& s = state.value();
+    const std::vector<std::complex<double>> p = ede::psi6(s);
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (species_ == kAllSpecies || s.species[i] == species_) f.psi6.push_back(std::abs(p[i]));
+  }
+  return f;
 }
 
 }  // namespace ede::render

@@ -16,7 +16,11 @@
 
 namespace ede::render {
 
-using Frame = DiskFrame;
+// A DiskFrame plus |psi6_j| per drawn disk (ede::psi6 over the whole state, nearest six neighbours of every
+// species, then the drawn species' entries), filled only when the colouring asks for it.
+struct Frame : DiskFrame {
+  std::vector<double> psi6;
+};
 
 class LogFrames {
  public:
@@ -28,7 +32,7 @@ class LogFrames {
     return tools::read_time(log_, text, option);
   }
   // The frame at t, or at the log's end (complete or not).
-  Result<Frame> at(const tools::TimeOption& t);
+  Result<Frame> at(const tools::TimeOption& t, bool with_psi6 = false);
   ScalarKind scalar() const { return log_.info().scalar; }
   std::string time_text(Time t) const { return exact_text(t, log_.info().scalar); }  // exact, in the log's type
 

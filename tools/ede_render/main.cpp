@@ -2,7 +2,7 @@
 //
 //   ede-render LOG --at T|end -o FILE.png|FILE.svg [options]                      one picture of the state at T
 //   ede-render LOG [--from T0] [--to T1|end] --frames K|--every DT -o DIR|FILE.mp4|FILE.gif [options]  a movie
-//   options: --color species|speed|displacement, --width PIXELS, --species NAME, --mark-species NAME
+//   options: --color species|speed|displacement|psi6, --width PIXELS, --species NAME, --mark-species NAME
 //            (repeatable), --no-legend, --fps F (movies), --max-displacement D (displacement colour scale)
 //
 // Thin: parse and check the command line here, then render_still (still.cpp) or render_movie (movie.cpp).
@@ -67,8 +67,8 @@ static int run_main(int argc, char** argv) {
   std::string colour = "species";
   app.add_option("--color,--colour", colour,
                  "species (default), speed (slow < 0.5, fast > 1.5 times the initial mean speed), or "
-                 "displacement from t = 0")
-      ->check(CLI::IsMember({"species", "speed", "displacement"}));
+                 "displacement from t = 0, or psi6 (the local bond order |psi6|, nearest six neighbours)")
+      ->check(CLI::IsMember({"species", "speed", "displacement", "psi6"}));
   app.add_option("--width", opt.width, "image width in pixels (SVG: points); the height follows the box")
       ->check(CLI::Range(16, 16384));
   app.add_option("--species", opt.species, "draw only the disks of this species (default: all)");
@@ -83,7 +83,10 @@ static int run_main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   ede::tools::add_version_flags(app, "ede-render");
   if (const auto stop = ede::tools::parse_command_line(app, argc, argv)) return *stop;
-  opt.colour = colour == "speed" ? ColourBy::Speed : colour == "displacement" ? ColourBy::Displacement : ColourBy::Species;
+  opt.colour = colour == "speed"          ? ColourBy::Speed
+               : colour == "displacement" ? ColourBy::Displacement
+               : colour == "psi6"         ? ColourBy::Psi6
+                                          : ColourBy::Species;
   return check_and_run(opt, app);
 }
 

@@ -151,7 +151,7 @@ int render_movie(const Options& opt) {
   };
   const int count = int(times.value().size());
   for (int k = 0; k < count; ++k) {
-    auto frame = frames.at(times.value()[std::size_t(k)]);
+    auto frame = frames.at(times.value()[std::size_t(k)], opt.colour == ColourBy::Psi6);
     if (!frame) return give_up(frame.error());
     const std::string path = (fs::path(target.value().frames_dir) / frame_name(k)).string();
     if (Status s = write_frame(path, ImageFormat::Png, frame.value(), opt, marked.value(), scale); !s)

@@ -18,7 +18,7 @@
 
 namespace ede::render {
 
-enum class ColourBy { Species, Speed, Displacement };
+enum class ColourBy { Species, Speed, Displacement, Psi6 };
 enum class ImageFormat { Png, Svg };
 
 struct Options {

@@ -20,7 +20,7 @@ int render_still(const Options& opt) {
   if (!frames) return fail(frames.error().message);
   auto at = frames.value().read_time(opt.at, "--at");
   if (!at) return fail(at.error().message);
-  auto frame = frames.value().at(at.value());
+  auto frame = frames.value().at(at.value(), opt.colour == ColourBy::Psi6);
   if (!frame) return fail(frame.error().message);
   const Frame& f = frame.value();
   auto marked = marked_disks(f, opt.mark_species);

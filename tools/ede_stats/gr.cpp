@@ -55,6 +55,14 @@ int run_gr(const GrOptions& opt) {
     s.add("g(sigma) fit", pm(c.value().from_gr));
     s.add("g(sigma) rate", pm(c.value().from_collisions) + " (Enskog collision frequency)");
     s.add("g(sigma) virial", pm(c.value().from_pressure) + " (Z = 1 + (pi/2) n sigma^2 g)");
+    // The equations of state at phi = (pi/4) n sigma^2 (equal disks), g = (Z - 1) / (2 phi).
+    const double phi = 0.25 * 3.14159265358979323846 * c.value().density * c.value().sigma * c.value().sigma;
+    const double g_kr = kolafa_rottner_contact_value(phi);
+    s.add("g(sigma) EOS", "Henderson " + brief(henderson_contact_value(phi)) + ", Kolafa-Rottner " +
+                              (std::isnan(g_kr) ? std::string("n/a (phi above its fit range 0.707)") : brief(g_kr)) +
+                              " at phi = " + brief(phi, 4));
+    s.number("g_sigma_henderson", henderson_contact_value(phi));
+    s.number("g_sigma_kolafa_rottner", g_kr);
     s.number("g_sigma_fit", c.value().from_gr.value), s.number("g_sigma_fit_error", c.value().from_gr.error);
     s.number("g_sigma_collisions", c.value().from_collisions.value);
     s.number("g_sigma_collisions_error", c.value().from_collisions.error);

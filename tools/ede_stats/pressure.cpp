@@ -92,6 +92,10 @@ void print_results(const PressureReport& r) {
   }
   line("ideal gas", ideal);
   line("Henderson", henderson);
+  const double z_kr = kolafa_rottner_z(r.packing_fraction);
+  line("Kolafa-R.", std::isnan(z_kr) ? "n/a: phi above the fit's range (0.707, the fluid's edge)"
+                                     : "Z(phi) = " + num(z_kr) + " (Mol. Phys. 104, 3435 (2006)), Z N kT / A = " +
+                                           num(z_kr * r.ideal()));
   if (r.has_walls()) line("checks", "wall: " + check_text(r.wall_mean));
   line(r.has_walls() ? "" : "checks", "virial: " + check_text(r.virial));
 }

@@ -2,7 +2,8 @@
 //
 //   ede-sweep SWEEP.toml [--set key=value]... [--out-dir DIR] [-j N] [--no-timing] [-q]
 //   ede-sweep SWEEP.toml --dry-run
-//   ede-sweep SWEEP.toml --plot FIG.png [--quantity Q] [--against KEY] [--reference henderson]
+//   ede-sweep SWEEP.toml --plot FIG.png [--quantity Q] [--against KEY] [--reference henderson|kolafa-rottner]...
+//             [--mark-transition]
 //   mpirun -n K ede-sweep SWEEP.toml
 //
 // Thin: loads the sweep, checks the base scene and the quantities before anything runs, picks the pool
@@ -31,8 +32,9 @@ namespace {
 using namespace ede::sweep;
 
 struct Options {
-  std::string sweep_path, out_dir, plot_path, quantity, against, reference;
-  std::vector<std::string> overrides;
+  std::string sweep_path, out_dir, plot_path, quantity, against;
+  std::vector<std::string> overrides, references;
+  bool mark_transition = false;
   std::size_t jobs = std::max(1u, std::thread::hardware_concurrency());
   bool dry_run = false, no_timing = false, quiet = false;
   double pilot_seconds = 1.0;
@@ -59,13 +61,38 @@ ede::Result<Sweep> load(const Options& opt) {
   return s;
 }
 
+// A theory curve of Z against the packing fraction from the library's own function, written beside the
+// tables for the figure script (which then draws what the library computes, not a copy of the formula).
+ede::Result<std::string> write_reference_curve(const std::string& folder, const std::string& name) {
+  const std::string path = folder + "/reference-" + name + ".csv";
+  std::string text = "phi,z\n";
+  for (int k = 0; k <= 360; ++k) {
+    const double phi = 0.0025 * k;
+    const double z = name == "henderson" ? ede::henderson_z(phi) : ede::kolafa_rottner_z(phi);
+    if (std::isfinite(z)) text += std::to_string(phi) + "," + std::to_string(z) + "\n";
+  }
+  std::FILE* f = std::fopen(path.c_str(), "w");
+  if (!f) return ede::Error{path + ": cannot write the reference curve"};
+  const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+  if (std::fclose(f) != 0 || !ok) return ede::Error{path + ": cannot write the reference curve"};
+  return path;
+}
+
 ede::Status plot(const Sweep& s, const Options& opt) {
   const std::vector<std::string> keys = parameter_columns(s.spec);
   if (keys.empty() || s.spec.collect.empty()) return ede::Error{"--plot needs a parameter and a collected quantity"};
   const std::string y = opt.quantity.empty() ? s.spec.collect.front() : opt.quantity;
   const std::string x = opt.against.empty() ? keys.front() : opt.against;
   std::vector<std::string> args = {s.results + "/points.csv", opt.plot_path, "--x", x, "--y", y};
-  if (!opt.reference.empty()) args.insert(args.end(), {"--reference", opt.reference});
+  for (const std::string& name : opt.references) {
+    auto curve = write_reference_curve(s.results, name);
+    if (!curve) return curve.error();
+    args.insert(args.end(), {"--reference-csv", name, curve.value()});
+  }
+  if (opt.mark_transition) {
+    // Bernard and Krauth, PRL 107, 155704 (2011): liquid-hexatic coexistence 0.700-0.716, hexatic to 0.720.
+    args.insert(args.end(), {"--band", "0.700", "0.716", "liquid + hexatic", "--band", "0.716", "0.720", "hexatic"});
+  }
   return ede::tools::run_plot_script_to("plot_sweep.py", args, opt.plot_path);
 }
 
@@ -107,8 +134,11 @@ int run(int argc, char** argv) {
   app.add_option("--plot", opt.plot_path, "draw a quantity's mean and standard error against a parameter (PNG, PDF, SVG)");
   app.add_option("--quantity", opt.quantity, "--plot: the quantity (default: the first collected)");
   app.add_option("--against", opt.against, "--plot: the parameter key (default: the first)");
-  app.add_option("--reference", opt.reference, "--plot: a theory curve against the packing fraction: henderson")
-      ->check(CLI::IsMember({"henderson"}));
+  app.add_option("--reference", opt.references,
+                 "--plot: a theory curve of Z against the packing fraction: henderson, kolafa-rottner (repeatable)")
+      ->check(CLI::IsMember({"henderson", "kolafa-rottner"}));
+  app.add_flag("--mark-transition", opt.mark_transition,
+               "--plot: shade the hard-disk liquid-hexatic coexistence (0.700-0.716) and hexatic (0.716-0.720) ranges");
   app.add_flag("-q,--quiet", opt.quiet, "no line per finished run");
   app.add_option("--child", opt.child, "(internal) run number K of the sweep in this process")->group("");
   ede::tools::add_version_flags(app, "ede-sweep");

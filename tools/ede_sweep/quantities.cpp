@@ -4,6 +4,7 @@
 #include "quantities.hpp"
 
 #include <algorithm>
+#include <complex>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -17,7 +18,9 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 const std::vector<std::string> kSummary = {"events",      "pair_collisions", "wall_collisions", "collisions_per_particle",
                                            "sim_time",    "energy_initial",  "energy_final",    "energy_ratio"};
-const std::vector<std::string> kPressure = {"z_virial", "z_wall", "z_henderson", "virial", "wall", "kT", "packing_fraction"};
+const std::vector<std::string> kPressure = {"z_virial", "z_wall",          "z_henderson", "z_kolafa_rottner",
+                                            "virial",   "wall",            "kT",          "packing_fraction"};
+const std::vector<std::string> kStructure = {"psi6"};
 
 struct Name {
   std::string family;  // summary, energy, collisions, crater, pressure
@@ -50,13 +53,15 @@ Result<Name> parse(const std::string& text) {
   const bool ok = (dot == std::string::npos && known(kSummary, head) && !n.time && (n.family = "summary", n.field = head, true)) ||
                   ((n.family == "energy" || n.family == "collisions") && n.field.empty() && n.time) ||
                   (n.family == "crater" && known(crater_metric_names(), n.field)) ||
-                  (n.family == "pressure" && known(kPressure, base) && !n.time);
+                  (n.family == "pressure" && known(kPressure, base) && !n.time) ||
+                  (n.family == "structure" && known(kStructure, n.field));
   if (ok) return n;
   std::string names;
   for (const auto& s : kSummary) names += s + ", ";
   names += "energy@T, collisions@T, crater.M[@T] (M: ";
   for (const auto& s : crater_metric_names()) names += s + " ";
-  names += "), pressure.P[_error] (P: z_virial z_wall z_henderson virial wall kT packing_fraction)";
+  names += "), pressure.P[_error] (P: z_virial z_wall z_henderson z_kolafa_rottner virial wall kT packing_fraction)";
+  names += ", structure.psi6[@T]";
   return Error{"collect: '" + text + "' is not a quantity. Known: " + names};
 }
 
@@ -77,6 +82,7 @@ double pressure_field(const PressureReport& r, const std::string& field) {
   const std::string f = error ? field.substr(0, field.size() - 6) : field;
   if (f == "packing_fraction") return error ? 0.0 : r.packing_fraction;
   if (f == "z_henderson") return error ? 0.0 : henderson_z(r.packing_fraction);
+  if (f == "z_kolafa_rottner") return error ? 0.0 : kolafa_rottner_z(r.packing_fraction);  // NaN above 0.707
   const PressureSeries* s = f == "z_virial" ? &r.z_virial : f == "virial" ? &r.virial : f == "kT" ? &r.kT
                             : f == "z_wall"  ? &r.z_wall
                                              : &r.wall_mean;
@@ -130,6 +136,13 @@ Result<std::vector<double>> collect_quantities(const std::vector<std::string>& n
       const auto& names_list = crater_metric_names();
       const auto k = std::size_t(std::find(names_list.begin(), names_list.end(), n.field) - names_list.begin());
       out.push_back(crater_metric_values(craters.at(n.time))[k]);
+    } else if (n.family == "structure") {  // psi6: the global bond order |<psi6_j>| at T (default: the end)
+      auto state = n.time ? log.state_at(*n.time) : log.state_at_end();
+      if (!state) return state.error();
+      const std::vector<std::complex<double>> p = psi6(state.value());
+      std::complex<double> sum = 0;
+      for (const auto& v : p) sum += v;
+      out.push_back(p.empty() ? kNaN : std::abs(sum) / double(p.size()));
     } else {
       if (!pressure) {
         auto r = measure_pressure(log);

@@ -7,8 +7,11 @@
 //   energy@T (mean kinetic energy per disk at T), collisions@T (collisions per particle up to T)
 //   crater.METRIC or crater.METRIC@T (ede-crater's metrics: depth, width, area, ...; default time: when
 //            10% of the energy is left, as ede-crater measures)
-//   pressure.NAME (z_virial, z_wall, virial, wall, kT, packing_fraction, and z_henderson: Henderson's Z at the
-//            run's packing fraction; NAME_error the standard error over the blocks, ede-stats pressure's)
+//   pressure.NAME (z_virial, z_wall, virial, wall, kT, packing_fraction, and z_henderson, z_kolafa_rottner:
+//            those equations' Z at the run's packing fraction, the latter NaN above its range phi 0.707;
+//            NAME_error the standard error over the blocks, ede-stats pressure's)
+//   structure.psi6 or structure.psi6@T (the global bond order |<psi6_j>| of ede-stats psi6 at T, default: the
+//            log's end)
 // Names are checked before any run starts. Rejected: a plug-in list of quantity objects (the names map to
 // a handful of library calls; a table of functions per name would be longer than the switch).
 #pragma once

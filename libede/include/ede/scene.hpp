@@ -138,6 +138,18 @@ struct StartSpec {
   bool reverse_velocities = false;  // v -> -v for every disk (after zero_momentum)
 };
 
+// [grow]: Lubachevsky-Stillinger growth to a dense disordered start (setup/grow.hpp). The species' radii
+// give only the radii's ratios: the disks are placed at a low packing fraction, then grow together, all
+// radii by one factor, during an event-driven run of their own (unit masses, kT held at 1), until the
+// packing fraction is `packing_fraction` (radii then exactly at it) or the reduced pressure Z = PA/(NkT)
+// exceeds `pressure` (jamming: the packing fraction reached is phi_J). Then the species' masses and
+// velocity rules apply to the grown positions, and the engine's run starts from them.
+struct GrowSpec {
+  std::optional<double> packing_fraction;  // target: the disks' area over the box's
+  std::optional<double> pressure;          // stop when Z exceeds it (jamming when packing_fraction is absent)
+  double rate = 1e-3;                      // d(mean diameter)/dt over the thermal speed sqrt(kT/m)
+};
+
 struct Scene {
   std::string source_name;   // file name (or "<text>") for messages
   std::string source_text;   // the effective scene as TOML, after --set overrides: what was run
@@ -152,6 +164,7 @@ struct Scene {
   LogSpec log;
   std::vector<SpeciesSpec> species;  // empty when the scene has a [start]
   std::optional<StartSpec> start;
+  std::optional<GrowSpec> grow;      // dense start by growth (with [[species]] only)
   StopSpec stop;
   std::optional<double> sample_interval;  // observers see the exact state at k * interval, k = 1, 2, ...
   std::vector<ActionSpec> actions;        // sorted by time

@@ -38,6 +38,7 @@ struct RunSummary {
   std::string effects;        // the engine instantiation's effects, e.g. "walls, elastic, grid 20x20"
   std::string status;         // why the run ended (to_string(RunStatus)), or "interrupted"
   std::string stall_message;  // why it stalled or came to rest, and what to do; else empty
+  std::string setup_note;     // what setup did beyond placing (a [grow] run: the packing fraction reached); else empty
   std::uint64_t seed = 0;
   std::uint64_t disks = 0;
   EventCounts counts;

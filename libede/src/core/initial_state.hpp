@@ -15,6 +15,7 @@ struct InitialState {
   std::vector<double> x, y, vx, vy, radius, mass;
   std::vector<std::int32_t> species;      // index into species_names
   std::vector<std::string> species_names;
+  std::string note;  // what setup did beyond the scene's words (growth: the packing fraction reached), or empty
 
   std::size_t size() const { return x.size(); }
   void add(double px, double py, double pvx, double pvy, double r, double m, std::int32_t s) {

@@ -73,6 +73,7 @@ std::string to_text(const RunSummary& s) {
     << "effects          " << s.effects << "\n"
     << "ended            " << s.status << "\n";
   if (!s.stall_message.empty()) o << "                 " << s.stall_message << "\n";
+  if (!s.setup_note.empty()) o << "setup            " << s.setup_note << "\n";
   o << "events           " << c.events() << " (pair " << c.of(EventKind::Pair) << ", wall " << c.of(EventKind::Wall)
     << ", cell " << c.of(EventKind::Cell) << ", wrap " << c.of(EventKind::Wrap) << ", action "
     << c.of(EventKind::Action) << "); samples " << c.of(EventKind::Sample) << ", stale predictions " << c.stale
@@ -120,6 +121,7 @@ std::string to_json(const RunSummary& s) {
   j["sim_time"] = s.sim_time;
   j["wall_seconds"] = s.wall_seconds;
   j["setup_seconds"] = s.setup_seconds;
+  if (!s.setup_note.empty()) j["setup_note"] = s.setup_note;
   j["events_before"] = s.events_before;
   j["events_per_second"] = s.events_per_second();
   j["collisions_per_second"] = s.collisions_per_second();

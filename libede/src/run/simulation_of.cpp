@@ -95,6 +95,7 @@ class SimulationOf final : public Simulation::Impl {
     if (guard_->tripped()) s.stall_message = guard_->message();
     s.wall_seconds = wall_seconds;
     s.setup_seconds = setup_seconds;
+    s.setup_note = setup_.initial.note;
     s.events_before = events_before;
     s.collisions_before = collisions_before;
     return s;

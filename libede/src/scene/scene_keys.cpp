@@ -17,7 +17,7 @@ namespace ede::scene_detail {
 namespace {
 
 constexpr std::string_view kRootKeys[] = {"seed", "box",  "physics",  "engine", "log",
-                                          "species", "stop", "sampling", "actions", "start"};
+                                          "species", "grow", "stop", "sampling", "actions", "start"};
 constexpr std::string_view kBoxKeys[] = {"size", "boundary"};
 constexpr std::string_view kPhysicsKeys[] = {"restitution", "wall_restitution", "tc", "gravity", "pairs"};
 constexpr std::string_view kWallRestitutionKeys[] = {"left", "right", "bottom", "top"};
@@ -29,6 +29,7 @@ constexpr std::string_view kSpeciesKeys[] = {"name",    "count",     "radius",  
 constexpr std::string_view kRadiusKeys[] = {"min", "max"};
 constexpr std::string_view kPlacementKeys[] = {"kind", "region", "packing_fraction", "lattice", "positions"};
 constexpr std::string_view kVelocityKeys[] = {"kind", "speed", "vector", "temperature", "values"};
+constexpr std::string_view kGrowKeys[] = {"packing_fraction", "pressure", "rate"};
 constexpr std::string_view kStopKeys[] = {"time", "events", "collisions_per_particle", "energy_fraction"};
 constexpr std::string_view kSamplingKeys[] = {"interval"};
 constexpr std::string_view kActionKeys[] = {"time", "kind"};
@@ -48,6 +49,7 @@ const Section species{"[[species]]", kSpeciesKeys};
 const Section radius{"species.radius = { min, max }", kRadiusKeys};
 const Section placement{"[species.placement]", kPlacementKeys};
 const Section velocity{"[species.velocity]", kVelocityKeys};
+const Section grow{"[grow]", kGrowKeys};
 const Section stop{"[stop]", kStopKeys};
 const Section sampling{"[sampling]", kSamplingKeys};
 const Section action{"[[actions]]", kActionKeys};
@@ -60,7 +62,7 @@ const Section* const kAllSections[] = {&sections::root,      &sections::box,    
                                        &sections::wall_restitution, &sections::pair,
                                        &sections::engine,    &sections::log,      &sections::species,
                                        &sections::radius,
-                                       &sections::placement, &sections::velocity, &sections::stop,
+                                       &sections::placement, &sections::velocity, &sections::grow, &sections::stop,
                                        &sections::sampling,  &sections::action, &sections::start};
 
 bool contains(std::span<const std::string_view> list, std::string_view word) {
@@ -190,7 +192,7 @@ const Section* section_for(std::string_view key) {  // the section of the table 
       {"log", &sections::log},           {"wall_restitution", &sections::wall_restitution},
       {"pairs", &sections::pair},
       {"species", &sections::species},   {"radius", &sections::radius},   {"placement", &sections::placement},
-      {"velocity", &sections::velocity}, {"stop", &sections::stop},       {"sampling", &sections::sampling},
+      {"velocity", &sections::velocity}, {"grow", &sections::grow},     {"stop", &sections::stop},       {"sampling", &sections::sampling},
       {"actions", &sections::action},    {"start", &sections::start}};
   for (const auto& [name, section] : kTables) {
     if (name == key) return section;

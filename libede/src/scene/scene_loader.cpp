@@ -397,6 +397,30 @@ void read_all_species(const Reader& top, Scene& scene) {
   }
 }
 
+// [grow]: a target packing fraction, a pressure (jamming), or both (whichever comes first). Only a bound
+// that no arrangement of these radii could exceed is refused here; setup knows the radii and says more.
+std::optional<GrowSpec> read_grow(const Reader& top, const Scene& scene) {
+  if (!top.has("grow")) return std::nullopt;
+  const Reader g = top.section("grow");
+  g.check_keys(sections::grow);
+  if (scene.start)
+    top.fail("grow", "a scene with [start] takes its disks as they are from the state, so there is nothing to grow",
+             "remove [grow], or replace [start] by [[species]]");
+  GrowSpec out;
+  out.packing_fraction = g.number("packing_fraction", Bounds::open(0, 1),
+                                  "give the packing fraction to grow to, e.g. packing_fraction = 0.72");
+  // Z above ~1e12 would need gaps below double's resolution near jamming: the growth could not end.
+  out.pressure = g.number("pressure", Bounds{1, 1e12, true, false},
+                          "give the reduced pressure Z = PA/(NkT) at which the disks count as jammed, e.g. 1e6");
+  // Slower than 1e-5 needs ~10^6 collisions per disk and more: hours for 10^4 disks.
+  out.rate = g.number("rate", Bounds{1e-5, 1, false, true}, "give a growth rate such as 1e-2 (fast) or 1e-4 (slow)")
+                 .value_or(out.rate);
+  if (!out.packing_fraction && !out.pressure)
+    g.fail_here("neither packing_fraction nor pressure is given, so the growth would never stop",
+                "add packing_fraction = 0.72 (a target) or pressure = 1e6 (grow until jammed), or both");
+  return out;
+}
+
 StopSpec read_stop(const Reader& top) {
   const Reader s = top.section("stop");
   s.check_keys(sections::stop);
@@ -496,6 +520,7 @@ Scene scene_from_tree(const toml::table& root, const Origin& origin) {
   scene.log = read_log(top);
   scene.start = read_start(top);
   if (!scene.start) read_all_species(top, scene);
+  scene.grow = read_grow(top, scene);
   scene.stop = read_stop(top);
   scene.sample_interval = read_sampling(top);
   scene.actions = read_actions(top);

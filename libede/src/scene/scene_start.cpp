@@ -48,6 +48,7 @@ Result<std::string> continuation_scene_text(const std::string& scene_text, const
   try {
     toml::table root = toml::parse(std::string_view(scene_text), std::string_view(scene_name));
     root.erase("species");
+    root.erase("grow");
     root.erase("actions");
     toml::table start;
     start.insert("from", log_path);

@@ -8,6 +8,9 @@
 //    species are then reordered along a Hilbert curve (positions quantised to 2^32 x 2^32 over the box,
 //    ties by placement order) so that disks near in space are near in memory, which the engine's cell
 //    lists and caches like; explicit species keep the order given (a velocity list refers to it).
+// 3b. With [grow]: the radii were scaled first so that placement works at a low packing fraction; the
+//    placed disks of every species then grow together (setup/grow.hpp) and each species is re-ordered
+//    along the curve. Velocities are drawn after this, so growth changes no species' random stream.
 // 4. Masses and velocities in the final order; then check_initial_state on the whole result.
 // Each stream draws radii, then positions, then velocities, and depends on nothing of later species (the
 // curve order uses the box, not the grid, whose cell size depends on every species): adding a species
@@ -18,9 +21,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #include "core/rng.hpp"
+#include "setup/grow.hpp"
 #include "setup/placement_grid.hpp"
 #include "setup/setup_lattice.hpp"
 #include "setup/setup_random_placement.hpp"
@@ -272,6 +277,66 @@ InitialState empty_state(const Scene& scene, std::size_t disks) {
   return state;
 }
 
+// --- growth ([grow], setup/grow.hpp) --------------------------------------------------------------------
+
+// pi / (2 sqrt 3): no arrangement of equal disks covers more of the plane.
+constexpr double kHexagonalPacking = 0.90689968211710892;
+
+// Scales every radius by one factor so that the disks cover grow_start_phi of the box: placement then
+// works at a low density and growth takes them to the target. Refuses a target that equal disks cannot have.
+Status scale_for_growth(const Scene& scene, std::vector<Disks>& disks) {
+  const GrowSpec& g = *scene.grow;
+  double area = 0, r_min = std::numeric_limits<double>::infinity(), r_max = 0;
+  for (const Disks& d : disks)
+    for (double r : d.r) {
+      area += kPi * r * r;
+      r_min = std::min(r_min, r);
+      r_max = std::max(r_max, r);
+    }
+  if (g.packing_fraction && r_min == r_max && *g.packing_fraction > kHexagonalPacking)
+    return Error{scene.source_name + ": grow.packing_fraction = " + number_text(*g.packing_fraction) +
+                 " is above pi/(2 sqrt 3) = 0.9069, the densest packing of equal disks (the hexagonal lattice), "
+                 "so no growth can reach it; give grow.packing_fraction <= 0.9069 (disordered disks jam near "
+                 "0.84; above that use placement.kind = \"lattice\"), or grow.pressure = 1e6 to grow until jammed"};
+  const double f = std::sqrt(setup_detail::grow_start_phi(g.packing_fraction.value_or(0)) * scene.lx * scene.ly / area);
+  for (Disks& d : disks)
+    for (double& r : d.r) r *= f;
+  return Ok{};
+}
+
+// Runs the growth on every placed disk, writes the grown disks back (each species re-ordered along the
+// curve, as placement orders them) and returns the line that the run's summary shows.
+Result<std::string> grow_placed(const Scene& scene, std::vector<Disks>& disks) {
+  setup_detail::GrowInput in;
+  in.lx = scene.lx;
+  in.ly = scene.ly;
+  in.periodic = scene.boundary == BoundaryKind::Periodic;
+  for (const Disks& d : disks) {
+    in.x.insert(in.x.end(), d.x.begin(), d.x.end());
+    in.y.insert(in.y.end(), d.y.begin(), d.y.end());
+    in.r.insert(in.r.end(), d.r.begin(), d.r.end());
+  }
+  in.target_phi = scene.grow->packing_fraction.value_or(0);
+  in.pressure = scene.grow->pressure.value_or(0);
+  in.rate = scene.grow->rate;
+  in.seed = scene.seed;
+  auto grown = setup_detail::grow_disks(in);
+  if (!grown) return Error{scene.source_name + ": [grow]: " + grown.error().message};
+  const setup_detail::GrowResult& g = grown.value();
+  std::size_t at = 0;
+  for (Disks& d : disks) {
+    for (std::size_t i = 0; i < d.x.size(); ++i, ++at) {
+      d.x[i] = g.x[at];
+      d.y[i] = g.y[at];
+      d.r[i] = g.r[at];
+    }
+    order_along_curve(d, scene.lx, scene.ly);
+  }
+  return "grown from packing fraction " + number_text(g.phi_start, 6) + " to " + number_text(g.phi, 12) +
+         (g.jammed ? " (jammed: Z = " + number_text(g.z, 6) + " > grow.pressure)" : std::string()) + " in " +
+         std::to_string(g.collisions) + " collisions, " + std::to_string(g.events) + " events";
+}
+
 }  // namespace
 
 Result<InitialState> build_initial_state(const Scene& scene) {
@@ -279,19 +344,30 @@ Result<InitialState> build_initial_state(const Scene& scene) {
   const std::size_t n_species = scene.species.size();
   std::vector<Rng> streams;
   std::vector<Disks> disks(n_species);
-  double r_max = 0;
   std::size_t total = 0;
   for (std::size_t k = 0; k < n_species; ++k) {
     streams.push_back(Rng::for_stream(scene.seed, k));
     disks[k].r = draw_radii(scene.species[k], streams[k]);
-    for (double r : disks[k].r) r_max = std::max(r_max, r);
     total += disks[k].r.size();
   }
+  if (scene.grow) {
+    if (Status st = scale_for_growth(scene, disks); !st) return st.error();
+  }
+  double r_max = 0;
+  for (const Disks& d : disks)
+    for (double r : d.r) r_max = std::max(r_max, r);
   PlacementGrid grid(scene.lx, scene.ly, scene.boundary == BoundaryKind::Periodic, 2 * r_max, total);
-  InitialState state = empty_state(scene, total);
   for (std::size_t k = 0; k < n_species; ++k) {
-    Disks& d = disks[k];
-    if (Status st = place_species(scene, k, grid, streams[k], d); !st) return st.error();
+    if (Status st = place_species(scene, k, grid, streams[k], disks[k]); !st) return st.error();
+  }
+  InitialState state = empty_state(scene, total);
+  if (scene.grow) {
+    auto note = grow_placed(scene, disks);
+    if (!note) return note.error();
+    state.note = note.value();
+  }
+  for (std::size_t k = 0; k < n_species; ++k) {
+    const Disks& d = disks[k];
     const std::vector<double> m = masses(scene.species[k].mass, d.r);
     std::vector<double> vx, vy;
     setup_detail::assign_velocities(scene.species[k].velocity, m, streams[k], vx, vy);

@@ -6,9 +6,8 @@
 // may straddle the boundary (overlap checks always use the periodic image in a periodic box). Disks of
 // different radii are placed largest first: big disks find room while the region is empty. RSA jams near
 // a packing fraction of 0.547 (monodisperse); denser packings need a lattice.
-// Rejected: placing on a lattice and melting it with a short simulation (needs the engine in setup) and
-// Lubachevsky-Stillinger growth (dense, but a simulation of its own, and hard to make deterministic
-// across scalar types).
+// Denser disordered starts: [grow] (setup/grow.hpp) places with this at a low density, then grows the disks.
+// Rejected: placing on a lattice and melting it with a short simulation (needs the engine in setup).
 #pragma once
 
 #include <cstdint>
