@@ -8,11 +8,14 @@ set -eu
 # libFuzzer for Clang (CI). ffmpeg is optional (movies). pybind11-dev, python3-dev, python3-numpy: the Python
 # module (python/); python3-pytest runs its tests; python3-gsd and python3-ase read its exports back (GSD is
 # also written through python3-gsd). libopenmpi-dev and openmpi-bin: ede-sweep on MPI ranks (mpirun -n K; the
-# build works without them, ede-sweep then runs local processes only).
+# build works without them, ede-sweep then runs local processes only). python3-ipykernel, python3-nbclient,
+# python3-nbformat: Jupyter's kernel and headless notebook execution (the notebook example's test; the
+# test skips without them).
 PACKAGES="build-essential cmake clang pkg-config capnproto libcapnp-dev libzstd-dev libcli11-dev \
 catch2 libtomlplusplus-dev libxxhash-dev zlib1g-dev nlohmann-json3-dev python3-matplotlib libcairo2-dev \
 libclang-rt-14-dev pybind11-dev python3-dev python3-numpy python3-pytest python3-gsd python3-ase \
-ffmpeg libcpp-httplib-dev chromium python3-websocket libopenmpi-dev openmpi-bin"
+ffmpeg libcpp-httplib-dev chromium python3-websocket libopenmpi-dev openmpi-bin python3-ipykernel \
+python3-nbclient python3-nbformat"
 
 missing=""
 for p in $PACKAGES; do

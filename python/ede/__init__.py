@@ -7,6 +7,7 @@
     ev = log.events(0.0, 0.1)                # a numpy structured array, one row per event
     h = ede.distribution(log)                # speed histogram, 2D Maxwell-Boltzmann, KS test
     ede.export_xyz(log, "gas.xyz", frames=50)   # for ASE and OVITO
+    t = ede.sweep("study.sweep.toml", workers=4)   # ede-sweep's tables as numpy structured arrays
 
 Errors are ede.Error subclasses carrying the library's messages (the same text as the tools print).
 See docs/python.md.
@@ -18,6 +19,7 @@ from .export import export_gsd, export_xyz, frame_times
 from .log import EVENT_KINDS, Log, open
 from .run import Simulation, load_scene, resume, run
 from .state import State
+from .sweeps import sweep, sweep_program, sweep_tables
 from .structure import (bond_order, contact_values, enskog_diffusion, henderson_contact, kolafa_rottner_contact,
                         kolafa_rottner_z, msd, pair_correlation,
                         structure_factor, vacf)
@@ -27,6 +29,6 @@ __version__ = _ede.version()
 __all__ = ["CorruptLogError", "Error", "InvalidError", "IoError", "UnsupportedError", "Report",
            "collision_series", "crater", "distribution", "energy_series", "pressure", "species_stats",
            "export_gsd", "export_xyz", "frame_times", "EVENT_KINDS", "Log", "open", "Simulation",
-           "load_scene", "resume", "run", "State", "bond_order", "contact_values", "enskog_diffusion",
-           "henderson_contact", "kolafa_rottner_contact", "kolafa_rottner_z", "msd", "pair_correlation",
-           "structure_factor", "vacf"]
+           "load_scene", "resume", "run", "State", "sweep", "sweep_program", "sweep_tables", "bond_order",
+           "contact_values", "enskog_diffusion", "henderson_contact", "kolafa_rottner_contact", "kolafa_rottner_z",
+           "msd", "pair_correlation", "structure_factor", "vacf"]

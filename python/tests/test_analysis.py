@@ -83,3 +83,21 @@ def test_crater_equals_ede_crater_measure(tmp_path):
     np.testing.assert_array_equal(c.height_before, ref["h_before"])
     assert c.depth == pytest.approx(np.max(ref["h_before"] - ref["h_after"]), rel=0, abs=0)
     assert c.count > 0
+
+
+def test_crater_metrics_equal_ede_crater_scans(tmp_path):
+    """Every metric of ede.crater, with the time and source it chose, against ede-crater scan's CSV (each row
+    the measurement `ede-crater LOG` makes of that run's log, 17 digits), one run collapsing (tc = 0)."""
+    out = tmp_path / "scan"
+    tool("ede-crater", "scan", ROOT / "examples" / "crater.toml", "--param", "physics.tc", "--values", "0,1e-6",
+         "--set", "species.projectile.radius=0.07", "--set", "species.bed.count=100",
+         "--set", "species.projectile.mass=125", "-q", "-j", 2, "--out-dir", out)
+    with open(out / "scan.csv", newline="") as f:
+        rows = list(csv.DictReader(f))
+    assert [r["suspect"] for r in rows] == ["1", "0"]  # tc = 0 collapses: measured at its log's end
+    for row in rows:
+        c = ede.crater(ede.open(out / row["log"]))
+        assert c.source == row["time_source"]
+        for key in ["time", "energy_fraction"] + ["count", "depth", "width", "area", "depth_below_mean",
+                                                  "deepest_x", "removed_area", "raised_area", "detached"]:
+            assert c[key] == float(row[key]), key

@@ -67,6 +67,33 @@ TEST_CASE("group_crater_scan: runs by value, in run order, with their times", "[
   CHECK(g[2].metrics.size() == crater_metric_names().size());
 }
 
+TEST_CASE("group_crater_scan: the runs' numbers alone give the same groups", "[analysis][crater]") {
+  const std::vector<CraterMeasurement> runs = {
+      measurement(1, 10, CraterTimeSource::EnergyFraction, 0.2), measurement(2, 20, CraterTimeSource::LogEnd, 0.4),
+      measurement(3, 30, CraterTimeSource::EnergyFraction, 0.3), measurement(5, 50, CraterTimeSource::Requested, 0.5)};
+  std::vector<CraterScanRun> numbers;
+  for (const CraterMeasurement& m : runs) numbers.push_back(crater_scan_run(m));
+  CHECK(numbers[1].metrics == crater_metric_values(runs[1]));
+  CHECK(numbers[1].source == CraterTimeSource::LogEnd);
+  CHECK(numbers[1].time == 0.4);
+  const std::vector<CraterScanGroup> a = group_crater_scan(runs, {0, 1, 0, 1}, 2);
+  const std::vector<CraterScanGroup> b = group_crater_scan(numbers, {0, 1, 0, 1}, 2);
+  REQUIRE(b.size() == 2);
+  for (std::size_t v = 0; v < 2; ++v) {
+    CHECK(b[v].runs == a[v].runs);
+    CHECK(b[v].at_log_end == a[v].at_log_end);
+    CHECK(b[v].requested == a[v].requested);
+    CHECK(b[v].first_time == a[v].first_time);
+    CHECK(b[v].last_time == a[v].last_time);
+    REQUIRE(b[v].metrics.size() == a[v].metrics.size());
+    for (std::size_t c = 0; c < a[v].metrics.size(); ++c) {
+      CHECK(b[v].metrics[c].mean == a[v].metrics[c].mean);
+      CHECK((b[v].metrics[c].error == a[v].metrics[c].error ||
+             (std::isnan(b[v].metrics[c].error) && std::isnan(a[v].metrics[c].error))));
+    }
+  }
+}
+
 TEST_CASE("scan_axis_position: a number, a vector's length, else NaN", "[analysis][crater]") {
   CHECK(scan_axis_position("25") == 25);
   CHECK(scan_axis_position("1e-3") == 1e-3);

@@ -17,6 +17,14 @@ namespace {
 
 const std::string kScene = source_path("examples/crater.toml");
 const std::string kSmall = " --set species.projectile.radius=0.07";
+// The tables of `ede-crater scan` before it became a sweep (tests/tools/fixtures/crater-scan/README.md).
+const std::string kFixtures = source_path("tests/tools/fixtures/crater-scan");
+
+// A scan's stdout without its last line ("wrote DIR/scan.csv ...", which names the output folder).
+std::string without_wrote_line(const std::string& out) {
+  const std::size_t last = out.rfind("wrote ");
+  return last == std::string::npos ? out : out.substr(0, last);
+}
 
 std::string make_crater_log(const std::string& name, const std::string& options) {
   return sim_log(kScene, kSmall + options, temp_path(name), "crater-sim-" + name);
@@ -121,6 +129,10 @@ TEST_CASE("ede-crater scan: deterministic CSV, the same for --jobs 1 and 2", "[t
   REQUIRE(crater(common + c + " -j 1", "scan-c").status == 0);
 
   const std::string runs = read_file(a + "/scan.csv"), aggregate = read_file(a + "/scan-aggregate.csv");
+  // The tables and the printed table are those of the scan before it became a sweep (its own threads).
+  CHECK(runs == read_file(kFixtures + "/mass/scan.csv"));
+  CHECK(aggregate == read_file(kFixtures + "/mass/scan-aggregate.csv"));
+  CHECK(without_wrote_line(ra.out) == without_wrote_line(read_file(kFixtures + "/mass/stdout.txt")));
   CHECK(runs == read_file(b + "/scan.csv"));
   CHECK(runs == read_file(c + "/scan.csv"));
   CHECK(aggregate == read_file(b + "/scan-aggregate.csv"));
@@ -147,6 +159,23 @@ TEST_CASE("ede-crater scan: deterministic CSV, the same for --jobs 1 and 2", "[t
   CHECK(contains(one.out, "measured at       t = " + f[6] + ", after"));
   CHECK(contains(one.out, "displaced         " + f[9] + " of 200 bed disks"));
   CHECK(std::filesystem::exists(a + "/v1-s2.txt"));
+
+  // The same scan again reuses every run; other measuring options measure the kept logs again, run none.
+  const std::string log_before = read_file(a + "/v0-s1.ede");
+  const ToolRun again = crater(common + a + " --jobs 2", "scan-again");  // -q is in common: no progress lines
+  REQUIRE(again.status == 0);
+  CHECK(read_file(a + "/scan.csv") == runs);
+  const ToolRun loud = crater("scan " + kScene + " --param species.projectile.mass --values 5,25 --seeds 2" + kSmall +
+                                  " --set species.bed.count=200 --out-dir " + a,
+                              "scan-loud");
+  REQUIRE(loud.status == 0);
+  CHECK(contains(loud.err, "ede-crater: 4/4 "));
+  CHECK(contains(loud.err, " ok (reused)"));
+  CHECK_FALSE(contains(loud.err, " s)"));  // no run's process ran
+  const ToolRun other = crater(common + a + " --threshold 1r", "scan-threshold");
+  REQUIRE(other.status == 0);
+  CHECK(read_file(a + "/scan.csv") != runs);  // counted with another threshold
+  CHECK(read_file(a + "/v0-s1.ede") == log_before);
 }
 
 TEST_CASE("ede-crater scan: each run's log is the one ede-sim writes for the same overrides", "[tool][ede-crater]") {
@@ -190,6 +219,9 @@ TEST_CASE("ede-crater scan --no-logs keeps the results and no log, and collapse 
   CHECK(!std::filesystem::exists(dir + "/v0-s1.ede"));
   CHECK(!std::filesystem::exists(dir + "/v1-s1.ede"));
   CHECK(std::filesystem::exists(dir + "/v0-s1.txt"));
+  CHECK(read_file(dir + "/scan.csv") == read_file(kFixtures + "/tc/scan.csv"));
+  CHECK(read_file(dir + "/scan-aggregate.csv") == read_file(kFixtures + "/tc/scan-aggregate.csv"));
+  CHECK(without_wrote_line(r.out) == without_wrote_line(read_file(kFixtures + "/tc/stdout.txt")));
   const std::vector<std::string> rows = lines(read_file(dir + "/scan.csv"));
   REQUIRE(rows.size() == 3);
   // Whether tc = 0 collapses in so small a bed is the physics' business; the mark must follow the status.

@@ -4,9 +4,10 @@
 //   ede-crater scan SCENE --param KEY --values V1,V2,... [--seeds K] [-j J] [--set k=v]... [--out-dir DIR]
 //
 // Thin: one file per subcommand, each parsing its options and calling libede (ede/crater.hpp); the
-// numbers come from logs by replay (a scan runs its scenes through ede::Simulation first, then measures
-// the logs). A first argument that is not a subcommand makes the command `measure`. Exit status: 0
-// success, 1 bad input (a missing log, an unknown species, a scene error), 2 a bad command line.
+// numbers come from logs by replay (a scan is a sweep of tools/sweep: each run's process runs its scene
+// through ede::Simulation, then measures its log). A first argument that is not a subcommand makes the
+// command `measure`. Exit status: 0 success, 1 bad input (a missing log, an unknown species, a scene
+// error), 2 a bad command line.
 // Rejected: a separate ede-scan program, which would repeat every measuring option.
 #include <CLI/CLI.hpp>
 #include <string>

@@ -1,44 +1,58 @@
-// run_scans: the runs of a scan, in-process, a few at a time on std::thread workers (see scan.hpp).
+// The runs of a scan, as a sweep (see scan.hpp): tools/sweep does them, each in its own process, and this
+// file says what a scan's run is and how it is measured.
 //
-// Independent runs are where DESIGN.md allows threads: each run is its own Simulation with its own log
-// file, so nothing any run computes depends on timing; a worker takes the next run by index and stores
-// its outcome at that index. The log of a run is byte-identical to what `ede-sim SCENE --set ... -o LOG`
-// writes (the same library, the same scene). Rejected: ede-sim child processes (the previous design),
-// which needed the ede-sim binary beside this one, a process pool of fork + exec, and exit codes and
-// stderr files to learn what the library can say directly. Each worker measures its run's log right after
-// the run (results stored by index, so nothing depends on which run finished first), which lets
-// --no-logs delete each log at once: a scan's disk use is a few logs, not all (903 MB were seen).
-#include <algorithm>
-#include <atomic>
+// The run's process loads the scene with the --set overrides, KEY=VALUE and seed=S (in that order, so
+// its log is byte-identical to `ede-sim SCENE --set ... -o LOG`), runs it, writes <name>.txt (the run's
+// summary) and measures its log with measure_log, exactly as `ede-crater LOG` does; the row carries the
+// numbers (time, E/E0, the metrics) and the text (the log's status, the time's source) to the table. With
+// --no-logs the log is deleted once measured, so a scan's disk use is a few logs, not all. The measuring
+// options are the row's `measured_with`: a rerun with other options measures the kept logs again and
+// reruns nothing. Rejected: in-process threads (the previous design; a crash of one run ended the scan)
+// and ede-sim children (a second process per run to measure, and the ede-sim binary beside this one).
 #include <cstdio>
-#include <mutex>
-#include <thread>
 
+#include "local_pool.hpp"
 #include "scan.hpp"
 
 namespace ede::crater_tool {
 
 namespace {
 
-struct Outcome {
-  bool started = false;
-  std::string failure;  // empty if the run finished
-  MeasuredLog measured;
-};
+// The sweep's `collect`: the numbers of a scan's row, in its CSV's order.
+std::vector<std::string> scan_columns() {
+  std::vector<std::string> c = {"time", "energy_fraction"};
+  for (const std::string& m : crater_metric_names()) c.push_back(m);
+  return c;
+}
 
-Outcome run_one(const ScanRun& run, const std::string& dir, const MeasureOptions& measure, bool keep_log) {
-  const std::string base = dir + "/" + run.name;
-  SimulationOptions options;
-  options.log_path = base + ".ede";
-  auto sim = Simulation::create(run.scene, options);
-  if (!sim) return {true, sim.error().message, {}};
-  sim.value().run();  // Stalled and Collapsed are outcomes, not failures: the log is complete, the run marked
-  if (Status closed = sim.value().close(); !closed) return {true, closed.error().message, {}};
-  if (Status s = write_text_file(base + ".txt", to_text(sim.value().summary())); !s) return {true, s.error().message, {}};
-  auto m = measure_log(options.log_path, measure);
-  if (!keep_log) std::remove(options.log_path.c_str());
-  if (!m) return {true, m.error().message, {}};
-  return {true, "", std::move(m).value()};
+// Every measuring option, so that rows measured otherwise are measured again, not reused.
+std::string measured_with(const MeasureOptions& o) {
+  return "ede-crater scan: at=" + o.at + " before=" + o.before + " energy_fraction=" + exact(o.energy_fraction) +
+         " species=" + o.species + " threshold=" + o.threshold + " bin_width=" + o.bin_width +
+         " drop_threshold=" + o.drop_threshold + " link_gap=" + o.link_gap +
+         " keep_detached=" + (o.keep_detached ? "1" : "0") + " points=" + std::to_string(o.points);
+}
+
+Result<sweep::Measured> measure_run(const sweep::RunToMeasure& run, const MeasureOptions& options) {
+  const std::string stem = run.log_path.substr(0, run.log_path.size() - 4);  // without ".ede"
+  if (run.fresh)
+    if (Status s = write_text_file(stem + ".txt", to_text(run.summary)); !s) return s.error();
+  auto m = measure_log(run.log_path, options);
+  if (!m) return m.error();
+  const CraterMeasurement& c = m.value().crater;
+  sweep::Measured out{{c.time, c.energy_fraction}, {m.value().run_status, to_string(c.source)}};
+  for (const double v : crater_metric_values(c)) out.values.push_back(v);
+  return out;
+}
+
+std::string label(const sweep::Sweep& s, const sweep::PlannedRun& r) {
+  return s.spec.parameters.front().keys.front() + "=" + r.columns.front() + ", seed " + std::to_string(*r.seed);
+}
+
+CraterTimeSource source_of(const std::string& text) {
+  for (const CraterTimeSource t : {CraterTimeSource::EnergyFraction, CraterTimeSource::LogEnd, CraterTimeSource::Requested})
+    if (text == to_string(t)) return t;
+  return CraterTimeSource::LogEnd;
 }
 
 }  // namespace
@@ -49,36 +63,59 @@ bool run_suspect(const std::string& status) {
   return false;
 }
 
-Result<std::vector<MeasuredLog>> run_scans(const std::vector<ScanRun>& runs, const std::string& dir, std::size_t jobs,
-                                           bool progress, const MeasureOptions& measure, bool keep_logs) {
-  std::vector<Outcome> outcomes(runs.size());
-  std::atomic<std::size_t> next{0};
-  std::atomic<bool> failed{false};
-  std::mutex report;
-  std::size_t finished = 0;
-  const auto work = [&] {
-    while (!failed) {
-      const std::size_t k = next++;
-      if (k >= runs.size()) return;
-      outcomes[k] = run_one(runs[k], dir, measure, keep_logs);
-      const bool ok = outcomes[k].failure.empty();
-      if (!ok) failed = true;
-      if (!progress) continue;
-      const std::lock_guard<std::mutex> lock(report);
-      const std::string& status = outcomes[k].measured.run_status;
-      std::fprintf(stderr, "ede-crater: %zu/%zu runs done (%s%s%s)\n", ++finished, runs.size(), runs[k].label.c_str(),
-                   ok ? "" : ": failed", ok && run_suspect(status) ? (": " + status).c_str() : "");
-    }
-  };
-  std::vector<std::thread> workers;
-  for (std::size_t w = 0; w < std::max<std::size_t>(1, std::min(jobs, runs.size())); ++w) workers.emplace_back(work);
-  for (std::thread& w : workers) w.join();
-  std::vector<MeasuredLog> measured;
-  for (std::size_t k = 0; k < runs.size(); ++k) {
-    if (!outcomes[k].failure.empty()) return Error{"the run " + runs[k].label + " failed: " + outcomes[k].failure};
-    measured.push_back(std::move(outcomes[k].measured));
+sweep::Sweep scan_sweep(const ScanOptions& opt, const std::vector<std::string>& values) {
+  sweep::Sweep s;
+  s.spec.path = s.spec.scene_path = opt.scene;
+  s.spec.results = s.results = opt.out_dir;
+  s.spec.base_overrides = opt.sets;
+  sweep::Parameter p{{opt.param}, {}};
+  for (const std::string& v : values) p.values.push_back({v});
+  s.spec.parameters.push_back(p);
+  for (std::uint64_t seed = opt.first_seed; seed < opt.first_seed + opt.seeds; ++seed) s.spec.seeds.push_back(seed);
+  s.spec.collect = scan_columns();
+  s.runs = sweep::expand_runs(s.spec);
+  for (sweep::PlannedRun& r : s.runs) r.name = "v" + std::to_string(r.point) + "-s" + std::to_string(*r.seed);
+  s.runs_folder = "";
+  s.child_argv = sweep::own_command_line();
+  s.tool = "ede-crater";
+  s.progress = !opt.quiet;
+  s.keep_logs = !opt.no_logs;
+  s.measured_with = measured_with(opt.measure);
+  s.measure = [options = opt.measure](const sweep::RunToMeasure& run) { return measure_run(run, options); };
+  return s;
+}
+
+Status check_scan_scenes(const sweep::Sweep& s, const std::string& param) {
+  for (const sweep::PlannedRun& r : s.runs) {
+    std::vector<Override> overrides;
+    for (const std::string& o : r.overrides) overrides.push_back({o});
+    if (auto scene = load_scene_file(s.spec.scene_path, overrides); !scene)
+      return Error{"with " + param + "=" + r.columns.front() + ": " + scene.error().message};
   }
-  return measured;
+  return Ok{};
+}
+
+Result<std::vector<ScanRow>> run_scan_runs(const sweep::Sweep& s, std::size_t jobs) {
+  const std::vector<sweep::RunRow> rows = sweep::run_local(s, jobs);
+  std::vector<ScanRow> out;
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const sweep::RunRow& row = rows[k];
+    const sweep::PlannedRun& r = s.runs[k];
+    if (!sweep::final_status(row.status) || row.notes.size() != 2 || row.values.size() != s.spec.collect.size())
+      return Error{"the run " + label(s, r) + " failed: " + (row.error.empty() ? row.status : row.error) +
+                   (s.keep_logs ? " (the same command again reuses the runs that have a result)" : "")};
+    ScanRow sr;
+    sr.value = r.point;
+    sr.seed = *r.seed;
+    sr.log = r.name + ".ede";
+    sr.run_status = row.notes[0];
+    sr.crater.source = source_of(row.notes[1]);
+    sr.crater.time = row.values[0];
+    sr.energy_fraction = row.values[1];
+    sr.crater.metrics.assign(row.values.begin() + 2, row.values.end());
+    out.push_back(std::move(sr));
+  }
+  return out;
 }
 
 }  // namespace ede::crater_tool

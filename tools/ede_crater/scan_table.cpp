@@ -1,8 +1,8 @@
 // The results of a scan: the per-run and per-value CSV files and the table on stdout (see scan.hpp).
 //
-// The numbers are the library's (crater_metric_values, group_crater_scan, scan_axis_position); this file
-// lays them out. The per-value table shows one metric, with when its runs were measured, so a scan that
-// mixes the energy criterion with the log's end says so. Rejected: printing every metric in the table
+// The numbers are the library's (crater_metric_values in each run's process, group_crater_scan,
+// scan_axis_position); this file lays them out. The per-value table shows one metric, with when its runs
+// were measured, so a scan that mixes the energy criterion with the log's end says so. Rejected: printing every metric in the table
 // (nine columns of means and errors do not read; the CSV has them).
 #include <cmath>
 
@@ -18,18 +18,14 @@ std::string axis_cell(const std::string& value) { return exact_cell(scan_axis_po
 
 std::vector<std::size_t> value_of_runs(const ScanResults& r) {
   std::vector<std::size_t> v;
-  for (const ScanRun& run : r.runs) v.push_back(run.value);
+  for (const ScanRow& row : r.rows) v.push_back(row.value);
   return v;
 }
 
-std::vector<CraterMeasurement> measurements(const ScanResults& r) {
-  std::vector<CraterMeasurement> m;
-  for (const MeasuredLog& ml : r.measured) m.push_back(ml.crater);
-  return m;
-}
-
 std::vector<CraterScanGroup> groups_of(const ScanResults& r) {
-  return group_crater_scan(measurements(r), value_of_runs(r), r.values.size());
+  std::vector<CraterScanRun> runs;
+  for (const ScanRow& row : r.rows) runs.push_back(row.crater);
+  return group_crater_scan(runs, value_of_runs(r), r.values.size());
 }
 
 // "t = a" or "t = a-b": the times the runs of one value were measured at.
@@ -38,7 +34,7 @@ std::string time_range(double lo, double hi) { return "t = " + brief(lo) + (lo =
 // Runs of value v whose end makes their crater doubtful (run_suspect).
 std::size_t suspect_runs(const ScanResults& r, std::size_t v) {
   std::size_t n = 0;
-  for (std::size_t k = 0; k < r.runs.size(); ++k) n += r.runs[k].value == v && run_suspect(r.measured[k].run_status);
+  for (const ScanRow& row : r.rows) n += row.value == v && run_suspect(row.run_status);
   return n;
 }
 
@@ -49,14 +45,11 @@ Status write_scan_csv(const ScanResults& r, const std::string& per_run, const st
   std::string s = "value,x,seed,log,run_status,suspect,time,time_source,energy_fraction";
   for (const std::string& m : names) s += "," + m;
   s += "\n";
-  for (std::size_t k = 0; k < r.runs.size(); ++k) {
-    const ScanRun& run = r.runs[k];
-    const CraterMeasurement& c = r.measured[k].crater;
-    s += csv_field(r.values[run.value]) + "," + axis_cell(r.values[run.value]) + "," + std::to_string(run.seed) + "," +
-         csv_field(run.name + ".ede") + "," + csv_field(r.measured[k].run_status) + "," +
-         (run_suspect(r.measured[k].run_status) ? "1" : "0") + "," + exact(c.time) + "," +
-         to_string(c.source) + "," + exact(c.energy_fraction);
-    for (const double v : crater_metric_values(c)) s += "," + exact(v);
+  for (const ScanRow& row : r.rows) {
+    s += csv_field(r.values[row.value]) + "," + axis_cell(r.values[row.value]) + "," + std::to_string(row.seed) + "," +
+         csv_field(row.log) + "," + csv_field(row.run_status) + "," + (run_suspect(row.run_status) ? "1" : "0") + "," +
+         exact(row.crater.time) + "," + to_string(row.crater.source) + "," + exact(row.energy_fraction);
+    for (const double v : row.crater.metrics) s += "," + exact(v);
     s += "\n";
   }
   if (Status w = write_text_file(per_run, s); !w) return w;

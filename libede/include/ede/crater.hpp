@@ -230,6 +230,18 @@ struct CraterScanGroup {
 std::vector<CraterScanGroup> group_crater_scan(const std::vector<CraterMeasurement>& runs,
                                                const std::vector<std::size_t>& value_of_run, std::size_t values);
 
+// A run of a scan as the numbers its table keeps (what a sweep's row carries from the run's process to
+// the table): the metrics in crater_metric_values' order, and when it was measured and why.
+struct CraterScanRun {
+  std::vector<double> metrics;
+  CraterTimeSource source = CraterTimeSource::EnergyFraction;
+  double time = 0;
+};
+CraterScanRun crater_scan_run(const CraterMeasurement& m);
+// The same grouping from those numbers (group_crater_scan of the measurements is this of crater_scan_run).
+std::vector<CraterScanGroup> group_crater_scan(const std::vector<CraterScanRun>& runs,
+                                               const std::vector<std::size_t>& value_of_run, std::size_t values);
+
 // Where a scan value (a TOML value, as typed) sits on a plot's axis: a number is itself, an array of
 // numbers its Euclidean length (a velocity vector gives the speed); NaN for anything else.
 double scan_axis_position(const std::string& value);

@@ -38,7 +38,9 @@ MeanAndError mean_and_error(const std::vector<double>& values) {
   return s;
 }
 
-std::vector<CraterScanGroup> group_crater_scan(const std::vector<CraterMeasurement>& runs,
+CraterScanRun crater_scan_run(const CraterMeasurement& m) { return {crater_metric_values(m), m.source, m.time}; }
+
+std::vector<CraterScanGroup> group_crater_scan(const std::vector<CraterScanRun>& runs,
                                                const std::vector<std::size_t>& value_of_run, std::size_t values) {
   std::vector<CraterScanGroup> groups(values);
   std::vector<std::vector<std::vector<double>>> columns(values,
@@ -47,9 +49,8 @@ std::vector<CraterScanGroup> group_crater_scan(const std::vector<CraterMeasureme
     const std::size_t v = value_of_run[k];
     if (v >= values) continue;
     CraterScanGroup& g = groups[v];
-    const CraterMeasurement& m = runs[k];
-    const std::vector<double> metrics = crater_metric_values(m);
-    for (std::size_t c = 0; c < metrics.size(); ++c) columns[v][c].push_back(metrics[c]);
+    const CraterScanRun& m = runs[k];
+    for (std::size_t c = 0; c < m.metrics.size() && c < columns[v].size(); ++c) columns[v][c].push_back(m.metrics[c]);
     ++g.runs;
     g.at_log_end += m.source == CraterTimeSource::LogEnd ? 1 : 0;
     g.requested += m.source == CraterTimeSource::Requested ? 1 : 0;
@@ -59,6 +60,13 @@ std::vector<CraterScanGroup> group_crater_scan(const std::vector<CraterMeasureme
   for (std::size_t v = 0; v < values; ++v)
     for (const std::vector<double>& column : columns[v]) groups[v].metrics.push_back(mean_and_error(column));
   return groups;
+}
+
+std::vector<CraterScanGroup> group_crater_scan(const std::vector<CraterMeasurement>& runs,
+                                               const std::vector<std::size_t>& value_of_run, std::size_t values) {
+  std::vector<CraterScanRun> numbers;
+  for (const CraterMeasurement& m : runs) numbers.push_back(crater_scan_run(m));
+  return group_crater_scan(numbers, value_of_run, values);
 }
 
 double scan_axis_position(const std::string& value) {

@@ -13,6 +13,8 @@
 #   mpi-kill   kill -9 of an MPI worker rank mid-sweep ends the job (OpenMPI aborts it); running the sweep
 #              again finishes it, and the table is the uninterrupted one's (skipped like mpi)
 #   bad        a bad point and a run stopped by the timeout are rows with their errors; the others finish
+#   collapse   a run that falls into inelastic collapse is a row with its status and the library's remedy,
+#              measured all the same; the other run finishes; a rerun keeps the row (the run's own outcome)
 set -u
 case_name=$1 build=$2 src=$3
 SWEEP=$build/tools/ede-sweep
@@ -148,6 +150,19 @@ bad)
   "$SWEEP" r.sweep.toml >out 2>&1; status=$?
   [ $status = 1 ] && grep -q "a range needs from, to (numbers) and count" out || fail "a bad range: $(cat out)"
   [ ! -e sweep-results ] || fail "a refused sweep file made a results folder"
+  ;;
+collapse)
+  "$SWEEP" "$HERE/collapse.sweep.toml" --out-dir c -j 2 -q >out 2>&1
+  status=$?
+  cat out c/runs.csv c/points.csv
+  [ $status = 3 ] || fail "exit status $status, expected 3 (a run did not end ok)"
+  grep -q "2 runs: 1 collapsed, 1 ok (2 run now, 0 reused)" out || fail "the closing line"
+  grep -q "^0,p0,1e-06,,[0-9.e-]*,[0-9.e-]*,ok,," c/runs.csv || fail "the run with the TC model should be ok"
+  grep -q '^1,p1,0.0,,[0-9.e-]*,[0-9.e-]*,collapsed,"inelastic collapse.*Enable the TC model' c/runs.csv ||
+    fail "the collapsed run's row: its status, its message with the remedy (TC) and its measured quantities"
+  grep -q "^1,0.0,1,0,," c/points.csv || fail "the collapsed point's aggregate (1 run, 0 ok, no mean)"
+  "$SWEEP" "$HERE/collapse.sweep.toml" --out-dir c -j 2 -q >again 2>&1
+  grep -q "(0 run now, 2 reused)" again || fail "a rerun should keep the collapsed run's row: $(cat again)"
   ;;
 *) fail "no case $case_name" ;;
 esac

@@ -21,6 +21,8 @@ std::string row_to_json(const RunRow& row) {
   nlohmann::json values = nlohmann::json::array();
   for (double v : row.values) values.push_back(std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr));
   j["values"] = values;
+  if (!row.notes.empty()) j["notes"] = row.notes;
+  if (!row.measured_with.empty()) j["measured_with"] = row.measured_with;
   j["status"] = row.status;
   j["error"] = row.error;
   j["wall_seconds"] = row.wall_seconds;
@@ -41,6 +43,8 @@ Result<RunRow> row_from_json(const std::string& text, const std::string& where) 
     row.collect = j.at("collect").get<std::vector<std::string>>();
     for (const auto& v : j.at("values"))
       row.values.push_back(v.is_null() ? std::numeric_limits<double>::quiet_NaN() : v.get<double>());
+    row.notes = j.value("notes", std::vector<std::string>());
+    row.measured_with = j.value("measured_with", std::string());
     row.status = j.at("status").get<std::string>();
     row.error = j.at("error").get<std::string>();
     row.wall_seconds = j.at("wall_seconds").get<double>();

@@ -4,6 +4,7 @@
 // complete, whose content digest (a replay of the whole log: what it says, not how it is stored) equals
 // the row's. Anything less and the run is done again (its log resumed if a killed process left one).
 #include <filesystem>
+#include <fstream>
 #include <limits>
 
 #include "child_process.hpp"
@@ -12,15 +13,27 @@
 
 namespace ede::sweep {
 
-std::string runs_dir(const Sweep& s) { return s.results + "/runs"; }
+std::string runs_dir(const Sweep& s) { return s.runs_folder.empty() ? s.results : s.results + "/" + s.runs_folder; }
 std::string log_path(const Sweep& s, const PlannedRun& r) { return runs_dir(s) + "/" + r.name + ".ede"; }
 std::string row_path(const Sweep& s, const PlannedRun& r) { return runs_dir(s) + "/" + r.name + ".json"; }
+std::string log_cell(const Sweep& s, const PlannedRun& r) {
+  return (s.runs_folder.empty() ? "" : s.runs_folder + "/") + r.name + ".ede";
+}
+
+std::vector<std::string> own_command_line() {
+  std::vector<std::string> argv = {std::filesystem::read_symlink("/proc/self/exe").string()};
+  std::ifstream in("/proc/self/cmdline", std::ios::binary);
+  std::string arg;
+  for (bool first = true; std::getline(in, arg, '\0'); first = false)
+    if (!first) argv.push_back(arg);
+  return argv;
+}
 
 std::optional<RunRow> reusable_row(const Sweep& s, const PlannedRun& r) {
   auto row = read_row_file(row_path(s, r));
   if (!row || row.value().overrides != r.overrides || !final_status(row.value().status) ||
       row.value().collect != s.spec.collect || row.value().values.size() != s.spec.collect.size() ||
-      row.value().digest.empty())
+      row.value().measured_with != s.measured_with || row.value().digest.empty())
     return std::nullopt;
   auto log = Log::open(log_path(s, r));
   if (!log || !log.value().info().complete) return std::nullopt;
@@ -51,7 +64,7 @@ RunRow execute_run(const Sweep& s, std::size_t k) {
   row.name = r.name;
   row.overrides = r.overrides;
   row.collect = s.spec.collect;
-  row.log = "runs/" + r.name + ".ede";
+  row.log = log_cell(s, r);
   row.values.assign(s.spec.collect.size(), std::numeric_limits<double>::quiet_NaN());
   const auto no_log = [&](RunRow& out) {
     if (!std::filesystem::exists(log_path(s, r))) out.log.clear();

@@ -24,6 +24,8 @@ struct RunRow {
   std::vector<std::string> overrides;  // what defines the run (checked on reuse)
   std::vector<std::string> collect;    // the quantities' names (a changed `collect` is measured again)
   std::vector<double> values;          // one per collected quantity (NaN: none)
+  std::vector<std::string> notes;      // text a tool's own measurement adds (ede-crater scan: the log's status)
+  std::string measured_with;           // the measuring settings besides `collect` (Sweep::measured_with)
   std::string status;                  // ok, a run status (stalled, collapsed, ...), failed, timeout, killed
   std::string error;                   // why, when status is not ok
   double wall_seconds = 0;             // the run's process, start to row written

@@ -62,6 +62,15 @@ std::optional<std::pair<RunRow, RunSummary>> finished_run(const Sweep& s, const 
   return std::make_pair(std::move(row).value(), std::move(summary).value());
 }
 
+// The run's values (and notes): the tool's own measurement, or the sweep's quantities.
+Result<Measured> measure(const Sweep& s, const PlannedRun& r, const std::string& path, const Log& log,
+                         const RunSummary& summary, bool fresh) {
+  if (s.measure) return s.measure(RunToMeasure{r, path, log, summary, fresh});
+  auto values = collect_quantities(s.spec.collect, summary, log);
+  if (!values) return values.error();
+  return Measured{std::move(values).value(), {}};
+}
+
 }  // namespace
 
 int run_child(const Sweep& s, std::size_t k) {
@@ -77,12 +86,15 @@ int run_child(const Sweep& s, std::size_t k) {
   row.name = r.name;
   row.overrides = r.overrides;
   row.collect = s.spec.collect;
-  row.log = "runs/" + r.name + ".ede";
+  row.log = log_cell(s, r);
+  row.measured_with = s.measured_with;
   row.values.assign(s.spec.collect.size(), std::numeric_limits<double>::quiet_NaN());
   const std::string path = log_path(s, r);
   const auto finish = [&](const std::string& status, const std::string& error) {
     row.status = status;
     row.error = error;
+    std::error_code ignored;
+    if (!s.keep_logs) std::filesystem::remove(path, ignored);  // measured (or failed): the row only
     if (!std::filesystem::exists(path)) row.log.clear();
     row.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const Status w = write_row_file(row_path(s, r), row);
@@ -92,9 +104,10 @@ int run_child(const Sweep& s, std::size_t k) {
   if (std::filesystem::exists(path))
     if (auto old = Log::open(path))
       if (auto done = finished_run(s, r, old.value())) {
-        auto values = collect_quantities(s.spec.collect, done->second, old.value());
-        if (!values) return finish("failed", "measuring the log: " + values.error().message);
-        row.values = values.value();
+        auto m = measure(s, r, path, old.value(), done->second, false);
+        if (!m) return finish("failed", "measuring the log: " + m.error().message);
+        row.values = m.value().values;
+        row.notes = m.value().notes;
         row.digest = done->first.digest;
         row.summary = done->first.summary;
         return finish(done->first.status, done->first.error);
@@ -119,9 +132,10 @@ int run_child(const Sweep& s, std::size_t k) {
   if (!digest) return finish("failed", digest.error().message);
   row.digest = digest.value();
   row.summary = summary_to_json(sim.value().summary());
-  auto values = collect_quantities(s.spec.collect, sim.value().summary(), log.value());
-  if (!values) return finish("failed", "measuring the log: " + values.error().message);
-  row.values = values.value();
+  auto m = measure(s, r, path, log.value(), sim.value().summary(), true);
+  if (!m) return finish("failed", "measuring the log: " + m.error().message);
+  row.values = m.value().values;
+  row.notes = m.value().notes;
   return normal_end(status) ? finish("ok", "")
                              : finish(status_word(status), std::string(to_string(status)) + ": " + sim.value().message());
 }
