@@ -367,17 +367,25 @@ class Reader {
         if (version_ >= 2) {
           const Seg& g = seg_[std::size_t(j)];
           const T u = along(g, a.x, a.y);
-          T nx, ny;
-          if (u > 0 && u < g.len) {
-            const bool below = height(g, a.x, a.y) < 0;
-            nx = below ? g.nx : -g.nx, ny = below ? g.ny : -g.ny;
+          const bool below = height(g, a.x, a.y) < 0;
+          const T bx = below ? g.nx : -g.nx, by = below ? g.ny : -g.ny;
+          const bool body_in = a.vx * bx + a.vy * by > 0, on_body = u > 0 && u < g.len;
+          T mx = 0, my = 0;
+          bool hit = false;
+          if (on_body && body_in) {
+            mx = bx, my = by, hit = true;
           } else {
-            const T ex = (u <= 0 ? g.ax : g.bx) - a.x, ey = (u <= 0 ? g.ay : g.by) - a.y;
-            const T dist = std::sqrt(ex * ex + ey * ey);
-            nx = ex / dist, ny = ey / dist;
+            const bool near_a = u < g.len / T(2);
+            const T dx = (near_a ? g.ax : g.bx) - a.x, dy = (near_a ? g.ay : g.by) - a.y;
+            const T dist = std::sqrt(dx * dx + dy * dy);
+            const T ex = dx / dist, ey = dy / dist;
+            if (a.vx * ex + a.vy * ey > 0) mx = ex, my = ey, hit = true;
+            else if (!on_body && body_in) mx = bx, my = by, hit = true;
           }
-          const T q = (tc ? T(2) : g.k) * ((T(0) - a.vx) * nx + (T(0) - a.vy) * ny);
-          px = a.vx + q * nx, py = a.vy + q * ny;
+          if (hit) {
+            const T q = (tc ? T(2) : g.k) * ((T(0) - a.vx) * mx + (T(0) - a.vy) * my);
+            px = a.vx + q * mx, py = a.vy + q * my;
+          }
         }
         const T vx = read_residual(residuals, px);
         a.vy = read_residual(residuals, py);

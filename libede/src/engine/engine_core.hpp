@@ -88,7 +88,7 @@ class Engine final : public EngineApi<T> {
     b_noise2_ = b_noise2_for(std::max(lx_, ly_));
     grid_.reset(shape.nx, shape.ny, lx_, ly_, p_.disk);
     find_big_disks(init, shape.split);
-    if constexpr (kSegments) setup_segments(options.physics, shape);
+    if constexpr (kSegments) setup_segments(options.physics, init, shape);
     queue_.reset(static_cast<std::uint32_t>(p_.size()));
     pred_.assign(p_.size(), Prediction{kNever<T>, kNever<T>, -1, 0, EventKind::Pair, kCrossRight});
     stall_limit_ = options.stall_limit ? options.stall_limit
@@ -478,13 +478,16 @@ class Engine final : public EngineApi<T> {
   // --- wall segments (WithSegments only) --------------------------------------------------------------
   // Segments with their cell lists: a cell lists those within the largest small radius of it (with a
   // margin for a centre a hair past its cell's side); a big disk, whose reach is wider, tries them all.
-  void setup_segments(const PhysicsSpec& ph, const GridShape& shape) {
+  void setup_segments(const PhysicsSpec& ph, const InitialState& init, const GridShape& shape) {
     std::vector<std::array<double, 4>> ends;
     for (const SegmentSpec& s : ph.segments) {
       seg_.push_back(make_segment(T(s.from[0]), T(s.from[1]), T(s.to[0]), T(s.to[1]), T(s.restitution)));
       ends.push_back({s.from[0], s.from[1], s.to[0], s.to[1]});
     }
-    const double reach = shape.split.small_max_radius * (1 + 1e-6) + 1e-9 * std::max(double(lx_), double(ly_));
+    double largest = 0;  // the largest radius in the cell lists (every disk when none is big)
+    for (const double r : init.radius)
+      if (r <= shape.split.big_radius) largest = std::max(largest, r);
+    const double reach = largest * (1 + 1e-6) + 1e-9 * std::max(double(lx_), double(ly_));
     seg_cells_.build(ends, grid_.nx(), grid_.ny(), double(lx_), double(ly_), reach);
   }
 
