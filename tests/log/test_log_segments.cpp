@@ -32,9 +32,8 @@ EngineOptions funnel_options(double xi) {
 
 InitialState funnel_gas() {
   InitialState s = box();
-  for (int k = 0; k < 60; ++k)
-    s.add(0.15 + 0.1 * (k % 8), 0.93 + 0.0 * k - 0.02 * (k / 8) - 0.1 * (k / 8 > 3), std::cos(k * 2.1), std::sin(k * 2.1),
-          0.008, 1.0 + (k % 3), 0);
+  for (int k = 0; k < 60; ++k)  // four rows above the funnel's mouth
+    s.add(0.05 + 0.06 * (k % 15), 0.92 + 0.02 * (k / 15), std::cos(k * 2.1), std::sin(k * 2.1), 0.008, 1.0 + (k % 3), 0);
   return s;
 }
 
@@ -137,5 +136,5 @@ restitution = 0.9
   REQUIRE(report.ok());
   INFO(report.value().text);
   CHECK(report.value().identical);
-  CHECK(report.value().events_compared > 20000);
+  CHECK(report.value().events_compared > 2000);  // logged events (cell crossings are not)
 }
