@@ -87,4 +87,8 @@ section "time reversal: forward, reverse, back (examples/time-reversal.toml)"
 section "continuing a run: cooled and reversed, against Enskog and Haff (examples/continue.toml)"
 "$py" "$root/examples/scripts/continue_from_state.py" "$tools" "$out"
 
+section "effusion through a hole in a divider, against kinetic theory (examples/effusion.toml)"
+"$py" "$root/examples/scripts/effusion.py" "$tools" "$out"
+"$tools/ede-render" "$out/effusion.ede" --at 20 --color speed -o "$out/effusion-picture.png"
+
 printf '\nall figures in %s (%s s)\n' "$out" "$(( $(date +%s) - start ))"

@@ -2,8 +2,8 @@
 //
 // The bytes choose 2-50 disks (radii, masses up to a ratio of 10^4, velocities), or 128-264 small disks with
 // up to three big ones (kept out of the cell lists, big_disks.hpp), the boundary (walls or
-// periodic), restitution for pairs and walls, the TC model, then run at most 3000 events while writing a
-// log. Checked after every slice of events and at the end:
+// periodic), restitution for pairs and walls, the TC model, in a walled box up to four wall segments
+// anywhere (the disks they cross removed), then run at most 3000 events while writing a log. Checked after every slice of events and at the end:
 //   - no pair overlaps by more than 1e-6 of its contact distance, and no prediction lies in the past;
 //   - kinetic energy is constant (1e-10 relative) when every collision is elastic, never increases
 //     otherwise;
@@ -21,6 +21,7 @@
 #include <cstring>
 #include <string>
 
+#include "core/segment.hpp"
 #include "engine/engine.hpp"
 #include "log/log_reader.hpp"
 #include "log/log_writer.hpp"
@@ -108,6 +109,31 @@ inline ede::InitialState make_state(Bytes& in, bool big) {
   return s;
 }
 
+// One to four wall segments at random in the box (flag 32, walls only), restitution 1 or, with
+// restitution on (flag 2), random; the disks they cross are removed.
+inline void add_segments(Bytes& in, bool inelastic, ede::InitialState& s, ede::PhysicsSpec& ph) {
+  const int count = 1 + in.byte() % 4;
+  for (int k = 0; k < count; ++k) {
+    const double ax = 0.02 + 0.96 * in.unit(), ay = 0.02 + 0.96 * in.unit();
+    const double bx = 0.02 + 0.96 * in.unit(), by = 0.02 + 0.96 * in.unit();
+    const double xi = inelastic ? in.unit() : 1.0;
+    if (ax == bx && ay == by) continue;
+    ph.segments.push_back({{ax, ay}, {bx, by}, xi});
+  }
+  ede::InitialState kept;
+  kept.species_names = s.species_names;
+  kept.lx = s.lx, kept.ly = s.ly;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    bool clear = true;
+    for (const ede::SegmentSpec& g : ph.segments) {
+      const auto seg = ede::make_segment(g.from[0], g.from[1], g.to[0], g.to[1], g.restitution);
+      clear = clear && ede::segment_distance(seg, s.x[i], s.y[i]) > s.radius[i] * (1 + 1e-9);
+    }
+    if (clear) kept.add(s.x[i], s.y[i], s.vx[i], s.vy[i], s.radius[i], s.mass[i], s.species[i]);
+  }
+  s = kept;
+}
+
 inline bool same(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 
@@ -129,7 +155,9 @@ inline bool fuzz_engine(const std::uint8_t* data, std::size_t size) {
   o.stop.events = 3000;
   o.rebuild_interval = 500 + 10 * in.byte();
   o.stall_limit = 20000;
-  const ede::InitialState s = make_state(in, (flags & 16) != 0);
+  ede::InitialState s = make_state(in, (flags & 16) != 0);
+  if ((flags & 32) && o.boundary == ede::BoundaryKind::Walls) add_segments(in, (flags & 2) != 0, s, o.physics);
+  if (s.size() == 0) return true;
   auto made = ede::make_engine<double>(s, o);
   CHECK_OR_FAIL(made.ok());  // the grid placement is valid by construction
   ede::EngineApi<double>& engine = *made.value();
@@ -141,6 +169,8 @@ inline bool fuzz_engine(const std::uint8_t* data, std::size_t size) {
   info.species_names = s.species_names;
   info.boundary = o.boundary;
   info.rebuild_interval = o.rebuild_interval;
+  for (const ede::SegmentSpec& g : o.physics.segments)  // replay predicts segment events from these
+    info.segments.insert(info.segments.end(), {g.from[0], g.from[1], g.to[0], g.to[1], g.restitution});
   ede::LogSettings settings;
   settings.chunk_events = 64;
   settings.keyframe_interval = 256;
@@ -149,7 +179,7 @@ inline bool fuzz_engine(const std::uint8_t* data, std::size_t size) {
   engine.add_sink(writer.value().get());
 
   const Totals start = totals(engine.particles());
-  const bool elastic = o.physics.restitution == 1.0 && o.physics.wall_restitution == 1.0;
+  const bool elastic = o.physics.elastic();
   ede::RunStatus status;
   while ((status = engine.run(250)) == ede::RunStatus::Running) {
     CHECK_OR_FAIL(engine.check_invariants(1e-6).empty());

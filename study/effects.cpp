@@ -38,6 +38,11 @@ std::vector<EffectConfig> effect_configs() {
       // on the same gas. A strong g also piles the gas up near the floor, where events cost more (denser).
       {"gravity, weak (g = 0.001)", {"physics.gravity=[0, -0.001]"}},
       {"gravity, strong (g = 1)", {"physics.gravity=[0, -1]"}},
+      // A divider with a hole across the middle (two segments): the segment engine's cost on the same
+      // gas (the all-effects engine has no segments: that column stays empty).
+      {"wall segments (a divider)",
+       {"walls.segments=[{from=[0.5,0.0],to=[0.5,0.45]},{from=[0.5,0.55],to=[0.5,1.0]}]"},
+       false},
       {"every effect (weak g)", {inelastic_pairs, "physics.pairs[0].restitution=0.9", "physics.wall_restitution=0.9",
                                  "physics.tc=1e-5", "physics.gravity=[0, -0.001]"}},
   };

@@ -42,7 +42,7 @@ std::vector<T> impulse(const EventColumns& c, const Column& after, const Column&
   std::vector<T> p(c.size(), T(0));
   for (std::size_t k = 0; k < p.size(); ++k) {
     const auto kind = static_cast<EventKind>(c.kind[k]);
-    if ((kind == EventKind::Pair || kind == EventKind::Wall) && c.i[k] >= 0) p[k] = mass[std::size_t(c.i[k])] * (a[k] - b[k]);
+    if ((kind == EventKind::Pair || kind == EventKind::Wall || kind == EventKind::Segment) && c.i[k] >= 0) p[k] = mass[std::size_t(c.i[k])] * (a[k] - b[k]);
   }
   return p;
 }

@@ -118,6 +118,17 @@ class Reader {
       one_plus_xi_.push_back(scalar_at<T>(h.pair_one_plus_xi.data() + k));
     for (std::size_t k = 0; k < h.wall_restitution.size(); k += kWidth<T>)
       xi_wall_.push_back(scalar_at<T>(h.wall_restitution.data() + k));
+    // After the four walls, five values per wall segment: ax, ay, bx, by, xi (FORMAT.md, "Wall segments").
+    for (std::size_t k = 4; k + 5 <= xi_wall_.size(); k += 5) {
+      Seg g;
+      g.ax = xi_wall_[k], g.ay = xi_wall_[k + 1], g.bx = xi_wall_[k + 2], g.by = xi_wall_[k + 3];
+      const T dx = g.bx - g.ax, dy = g.by - g.ay;
+      g.len = std::sqrt(dx * dx + dy * dy);
+      g.ux = dx / g.len, g.uy = dy / g.len;
+      g.nx = -g.uy, g.ny = g.ux;
+      g.k = T(1) + xi_wall_[k + 4];
+      seg_.push_back(g);
+    }
   }
 
   // Replays the whole log from its first keyframe; after each chunk, `check(events so far, records)`.
@@ -186,7 +197,45 @@ class Reader {
     return leaving ? z : never();
   }
 
+  struct Seg {
+    T ax, ay, bx, by, ux, uy, nx, ny, len, k;
+  };
+  T height(const Seg& g, T x, T y) const { return (x - g.ax) * g.nx + (y - g.ay) * g.ny; }
+  T along(const Seg& g, T x, T y) const { return (x - g.ax) * g.ux + (y - g.ay) * g.uy; }
+  T floor2() const {
+    const T floor = T(8) * std::numeric_limits<T>::epsilon() * std::max(lx_, ly_);
+    return floor * floor;
+  }
+  // The pair contact time's tau for relative position (dx, dy), relative velocity (dvx, dvy), distance s.
+  T contact(T dx, T dy, T dvx, T dvy, T s) const {
+    const T bb = dx * dvx + dy * dvy;
+    if (!(bb < 0)) return never();
+    const T aa = dvx * dvx + dvy * dvy;
+    if (bb * bb <= floor2() * aa) return never();
+    const T c = (dx * dx + dy * dy) - s * s;
+    if (c <= 0) return T(0);
+    const T d = bb * bb - aa * c;
+    if (!(d > 0)) return never();
+    return c / (-bb + std::sqrt(d));
+  }
+  T segment_time(const Record<T>& d, const Seg& g) const {
+    const T h = height(g, d.x, d.y), vn = d.vx * g.nx + d.vy * g.ny;
+    const T dist = h < 0 ? -h : h;
+    const T approach = h < 0 ? vn : -vn;
+    const T b = dist * -approach;
+    T best = never();
+    if (b < 0 && b * b > floor2() * (d.vx * d.vx + d.vy * d.vy)) {
+      const T tau = dist > d.r ? (dist - d.r) / approach : T(0);
+      const T u = along(g, d.x + d.vx * tau, d.y + d.vy * tau);
+      if (u >= 0 && u <= g.len) best = tau;
+    }
+    best = std::min(best, contact(g.ax - d.x, g.ay - d.y, -d.vx, -d.vy, d.r));
+    best = std::min(best, contact(g.bx - d.x, g.by - d.y, -d.vx, -d.vy, d.r));
+    return best == never() ? never() : d.t + best;
+  }
+
   T predict_time(int kind, std::int32_t i, std::int32_t j) const {
+    if (kind == 6) return segment_time(disk_[std::size_t(i)], seg_[std::size_t(j)]);
     if (kind == 1) {
       const Record<T>& d = disk_[std::size_t(i)];
       if (gx_ == T(0) && gy_ == T(0)) {
@@ -257,7 +306,7 @@ class Reader {
       const int kind = version_ >= 2 ? (byte & ~16) : byte;
       const bool tc = version_ >= 2 && (byte & 16);
       std::int32_t i = -1, j = -1;
-      if (kind == 0 || kind == 1 || kind == 3) {
+      if (kind == 0 || kind == 1 || kind == 3 || kind == 6) {
         i = std::int32_t(disks.varint());
         const U128 p = partners.varint();
         j = kind == 0 ? std::int32_t(i + unzig(p)) : std::int32_t(p);
@@ -311,6 +360,36 @@ class Reader {
         const T vx = read_residual(residuals, px);
         a.vy = read_residual(residuals, py);
         a.vx = vx;
+      } else if (kind == 6) {
+        Record<T>& a = disk_[std::size_t(i)];
+        bring(a, t);
+        T px = a.vx, py = a.vy;
+        if (version_ >= 2) {
+          const Seg& g = seg_[std::size_t(j)];
+          const T u = along(g, a.x, a.y);
+          const bool below = height(g, a.x, a.y) < 0;
+          const T bx = below ? g.nx : -g.nx, by = below ? g.ny : -g.ny;
+          const bool body_in = a.vx * bx + a.vy * by > 0, on_body = u > 0 && u < g.len;
+          T mx = 0, my = 0;
+          bool hit = false;
+          if (on_body && body_in) {
+            mx = bx, my = by, hit = true;
+          } else {
+            const bool near_a = u < g.len / T(2);
+            const T dx = (near_a ? g.ax : g.bx) - a.x, dy = (near_a ? g.ay : g.by) - a.y;
+            const T dist = std::sqrt(dx * dx + dy * dy);
+            const T ex = dx / dist, ey = dy / dist;
+            if (a.vx * ex + a.vy * ey > 0) mx = ex, my = ey, hit = true;
+            else if (!on_body && body_in) mx = bx, my = by, hit = true;
+          }
+          if (hit) {
+            const T q = (tc ? T(2) : g.k) * ((T(0) - a.vx) * mx + (T(0) - a.vy) * my);
+            px = a.vx + q * mx, py = a.vy + q * my;
+          }
+        }
+        const T vx = read_residual(residuals, px);
+        a.vy = read_residual(residuals, py);
+        a.vx = vx;
       } else if (kind == 3) {
         Record<T>& a = disk_[std::size_t(i)];
         a.x = a.x + a.vx * (t - a.t);
@@ -336,6 +415,7 @@ class Reader {
   std::uint32_t version_ = 1;
   std::size_t species_ = 1;
   std::vector<T> one_plus_xi_, xi_wall_;
+  std::vector<Seg> seg_;
 };
 
 }  // namespace ede::reference

@@ -405,3 +405,21 @@ TEST_CASE("ede-render: a bad command line exits with status 2 and CLI11's messag
   CHECK(version.status == 0);
   CHECK(version.out.rfind("ede-render, ede ", 0) == 0);
 }
+
+TEST_CASE("ede-render draws the scene's wall segments", "[tool][ede-render][segment]") {
+  // The tiny scene with a vertical segment at x = 1.1 from y = 0.1 to 0.5 (clear of every disk).
+  const std::string text = std::string(kTinyScene) + "[[walls.segments]]\nfrom = [1.1, 0.1]\nto = [1.1, 0.5]\n";
+  const std::string log = make_log("segments", text.c_str());
+  const std::string png = temp_path("render-segments.png");
+  const ToolRun r = render(log + " --at 1 --width 400 --no-legend -o " + png, "segments");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const Png image(png);
+  const auto at = [&](double x, double y) {
+    const auto [px, py] = pixel(x, y, 200, 1.0);
+    return image.rgb(px, py);
+  };
+  CHECK(at(1.1, 0.3) != kBackground);  // on the segment: a dark line
+  CHECK(at(1.1, 0.7) == kBackground);  // beyond its end
+  CHECK(at(1.2, 0.3) == kBackground);
+}

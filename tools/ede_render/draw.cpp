@@ -59,6 +59,21 @@ void draw_box(cairo_t* cr, const Frame& f, const Mapping& m) {
   cairo_set_dash(cr, nullptr, 0, 0);
 }
 
+// Wall segments: dark lines as thick as the box's walls, with round ends (the end points are walls too).
+void draw_segments(cairo_t* cr, const Frame& f, const Mapping& m) {
+  if (f.segments.empty()) return;
+  const double w = std::max(1.5, m.x(f.lx) / 400);
+  cairo_set_line_width(cr, w);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+  for (const auto& s : f.segments) {
+    cairo_move_to(cr, m.x(s[0]), m.y(s[1]));
+    cairo_line_to(cr, m.x(s[2]), m.y(s[3]));
+  }
+  cairo_stroke(cr);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+}
+
 void draw_scene(cairo_t* cr, const Picture& p) {
   const Frame& f = p.frame;
   const Mapping m{p.size.width / f.lx, f.ly};
@@ -73,6 +88,7 @@ void draw_scene(cairo_t* cr, const Picture& p) {
   for (std::size_t i = 0; i < f.size(); ++i)  // after every disk, so neighbours never cover a mark
     if (p.marked[i])
       for (const auto& [ox, oy] : images(f, i)) draw_mark(cr, m.x(f.x[i] + ox), m.y(f.y[i] + oy), f.r[i] * m.scale);
+  draw_segments(cr, f, m);
   cairo_restore(cr);
   draw_box(cr, f, m);
   draw_label(cr, f, p.size);

@@ -43,6 +43,7 @@ class LogFrames {
   Log log_;
   State initial_;
   std::int32_t species_ = kAllSpecies;
+  std::vector<std::array<double, 4>> segments_;  // the scene's wall segments, drawn on every frame
 };
 
 }  // namespace ede::render

@@ -23,8 +23,10 @@ struct EventsOptions {
   bool full = false;
 };
 
-bool has_disk(EventKind k) { return k == EventKind::Pair || k == EventKind::Wall || k == EventKind::Wrap; }
-bool has_vi(EventKind k) { return k == EventKind::Pair || k == EventKind::Wall; }
+bool has_disk(EventKind k) {
+  return k == EventKind::Pair || k == EventKind::Wall || k == EventKind::Wrap || k == EventKind::Segment;
+}
+bool has_vi(EventKind k) { return k == EventKind::Pair || k == EventKind::Wall || k == EventKind::Segment; }
 
 // One row; the columns an event kind does not have are left empty.
 std::string row(const Log& log, const Event& e, bool full) {

@@ -53,7 +53,8 @@ void print_events(const Log& log, std::string& problem) {
   const EventCounts& c = counts.value();
   line("events", total + ": pair " + std::to_string(c.of(EventKind::Pair)) + ", wall " +
                      std::to_string(c.of(EventKind::Wall)) + ", wrap " + std::to_string(c.of(EventKind::Wrap)) +
-                     ", action " + std::to_string(c.of(EventKind::Action)));
+                     ", action " + std::to_string(c.of(EventKind::Action)) +
+                     (c.of(EventKind::Segment) ? ", segment " + std::to_string(c.of(EventKind::Segment)) : ""));
 }
 
 void print_records(const Log& log) {

@@ -53,6 +53,13 @@ Reference make_reference(const State& initial) {
   return r;
 }
 
+std::string segments_field(const Scene& scene) {
+  if (scene.physics.segments.empty()) return "";
+  nlohmann::json list = nlohmann::json::array();
+  for (const SegmentSpec& g : scene.physics.segments) list.push_back({g.from[0], g.from[1], g.to[0], g.to[1]});
+  return ",\"segments\":" + list.dump();
+}
+
 std::string pack_frame(const State& s, const Reference& ref, const FrameExtras& extras, std::size_t max_disks) {
   const std::size_t n = s.size();
   const GasSnapshot g = snapshot(s);

@@ -35,4 +35,8 @@ struct FrameExtras {
 
 std::string pack_frame(const State& s, const Reference& ref, const FrameExtras& extras, std::size_t max_disks);
 
+// ,"segments":[[ax,ay,bx,by],...] for FrameExtras::json_fields: the scene's wall segments, which the page
+// draws over the disks ("" when the scene has none, so other frames keep their bytes).
+std::string segments_field(const Scene& scene);
+
 }  // namespace ede::view

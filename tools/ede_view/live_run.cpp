@@ -327,7 +327,8 @@ std::optional<std::string> LiveRuns::frame(std::size_t max_disks) {
     extras.collisions = double(run->collisions);
     extras.json_fields = "\"events_per_second\":" + nlohmann::json(run->events_per_second).dump() +
                          ",\"status\":" + nlohmann::json(run->status).dump() +
-                         ",\"log\":" + nlohmann::json(fs::path(run->log_path).filename().string()).dump();
+                         ",\"log\":" + nlohmann::json(fs::path(run->log_path).filename().string()).dump() +
+                         segments_field(run->scene);
   }
   run->wanted = true;
   if (!state) return std::nullopt;

@@ -24,6 +24,7 @@ struct OpenLog {
   std::optional<Log> log;
   std::optional<Reference> reference;
   std::optional<double> pair_share;
+  std::optional<std::string> segments;  // segments_field of the log's scene
   std::uint64_t last_use = 0;
 };
 
@@ -142,7 +143,11 @@ void add_log_routes(httplib::Server& server, const std::vector<Root>& roots) {
       entry->pair_share = logged > 0 ? double(counts.value().of(EventKind::Pair)) / logged : 0.0;
     }
     extras.collisions = *entry->pair_share * double(s.events);
-    extras.json_fields = "\"t_request\":" + nlohmann::json(t_text).dump();
+    if (!entry->segments) {
+      auto scene = log.scene();
+      entry->segments = scene ? segments_field(scene.value()) : std::string();
+    }
+    extras.json_fields = "\"t_request\":" + nlohmann::json(t_text).dump() + *entry->segments;
     std::size_t max = *max_disks >= 1 ? std::size_t(*max_disks) : kDefaultMaxDisks;
     res.set_header("Cache-Control", "no-store");
     res.set_content(pack_frame(s, *entry->reference, extras, max), "application/octet-stream");

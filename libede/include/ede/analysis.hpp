@@ -8,6 +8,7 @@
 // feed them. Every figure a user makes comes from a log: nothing here reruns the physics.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -413,6 +414,9 @@ struct DiskFrame {
   std::vector<double> displacement;        // from the initial state (periodic: the nearest image's)
   std::vector<std::int32_t> species;
   double initial_mean_speed = 0;           // the mean speed of these disks in the initial state
+  // Wall segments (ax, ay, bx, by) to draw; disk_frame leaves it empty (a State carries none), a reader
+  // of a log fills it from the log's scene (ede-render does).
+  std::vector<std::array<double, 4>> segments;
 
   std::size_t size() const { return x.size(); }
 };

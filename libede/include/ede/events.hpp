@@ -22,8 +22,9 @@ enum class EventKind : std::uint8_t {
   Wrap = 3,    // a disk crosses a periodic edge: its stored position moves by one box length
   Action = 4,  // a scheduled action (reverse every velocity)
   Sample = 5,  // an observer's sampling time: no state change, not logged
+  Segment = 6,  // a disk hits a wall segment (its body or an end point); Event::j is the segment's index
 };
-constexpr int kEventKindCount = 6;
+constexpr int kEventKindCount = 7;
 const char* to_string(EventKind);  // "pair", "wall", ...
 
 // Event::j of a wall event: which wall. Of a wrap event: which edge the disk crossed.
@@ -36,11 +37,11 @@ struct EventCounts {
   std::uint64_t tc_elastic = 0;  // collisions made elastic by the TC model
 
   std::uint64_t of(EventKind k) const { return by_kind[static_cast<int>(k)]; }
-  std::uint64_t collisions() const { return of(EventKind::Pair) + of(EventKind::Wall); }
+  std::uint64_t collisions() const { return of(EventKind::Pair) + of(EventKind::Wall) + of(EventKind::Segment); }
   // Processed events: everything but samples and stale predictions (what stop.events counts).
   std::uint64_t events() const {
     return of(EventKind::Pair) + of(EventKind::Wall) + of(EventKind::Cell) + of(EventKind::Wrap) +
-           of(EventKind::Action);
+           of(EventKind::Action) + of(EventKind::Segment);
   }
 };
 
@@ -67,10 +68,10 @@ struct Event {
   Time time = 0;
   EventKind kind = EventKind::Pair;
   std::int32_t i = -1;  // the disk (pair: the lower id); -1 for an action
-  std::int32_t j = -1;  // pair: the other disk; wall: WallId; wrap: WrapDir; action: -1
+  std::int32_t j = -1;  // pair: the other disk; wall: WallId; wrap: WrapDir; segment: its index; action: -1
   // Positions of i and j at the event (a wrap: i's position after it moved by one box length).
   Time xi = 0, yi = 0, xj = 0, yj = 0;
-  // Velocities just before and just after the event (pair: both disks; wall: i; wrap: i's, unchanged).
+  // Velocities just before and just after the event (pair: both disks; wall, segment: i; wrap: i's, unchanged).
   Time vix_before = 0, viy_before = 0, vjx_before = 0, vjy_before = 0;
   Time vix = 0, viy = 0, vjx = 0, vjy = 0;
 };

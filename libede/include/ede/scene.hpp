@@ -95,6 +95,14 @@ struct PairRestitution {  // the restitution between disks of two species (by na
   double value = 1;
 };
 
+// A straight wall segment from `from` to `to` ([walls] in a scene: [[walls.segments]], or the sides of a
+// [[walls.polygons]]), inside the box, with its own restitution: disks bounce off its body from either
+// side and off its end points (docs/scene-format.md; the rule: engine/collide.hpp).
+struct SegmentSpec {
+  std::array<double, 2> from{0, 0}, to{0, 0};
+  double restitution = 1;
+};
+
 enum WallSide { kLeftWall = 0, kRightWall = 1, kBottomWall = 2, kTopWall = 3 };  // the order of ede::WallId
 
 struct PhysicsSpec {
@@ -104,6 +112,7 @@ struct PhysicsSpec {
   std::vector<PairRestitution> pairs;
   double tc = 0;                       // TC model: a collision within tc of a participant's previous one is elastic
   std::array<double, 2> gravity{0, 0};  // constant acceleration (walls only)
+  std::vector<SegmentSpec> segments;    // wall segments inside the box (walls boundary, no gravity)
 
   double wall(int side) const { return walls[std::size_t(side)].value_or(wall_restitution); }
   bool has_gravity() const { return gravity[0] != 0 || gravity[1] != 0; }
@@ -112,6 +121,7 @@ struct PhysicsSpec {
     bool all = restitution == 1;
     for (int w = 0; w < 4; ++w) all = all && wall(w) == 1;
     for (const PairRestitution& p : pairs) all = all && p.value == 1;
+    for (const SegmentSpec& s : segments) all = all && s.restitution == 1;
     return all;
   }
 };

@@ -81,6 +81,7 @@ class EnergyWalk {
         set(std::size_t(e.i), e.vix, e.viy);
         ++walls_;
         break;
+      case EventKind::Segment: set(std::size_t(e.i), e.vix, e.viy); break;
       case EventKind::Action: resync(); break;
       default: break;  // wraps move a disk, not its velocity
     }

@@ -11,9 +11,17 @@
 // Wall (the course's rule, tangential factor included): vertical wall v' = (-xi vx, xi vy), horizontal
 // wall v' = (xi vx, -xi vy). The elastic versions are separate functions so the elastic engine carries no
 // multiplication by 1.
+// Segment (a straight wall of any direction, core/segment.hpp): the disk-disk rule with the segment as an
+// infinite mass at rest, v' = v - (1 + xi) (v.n) n: the normal component reversed and scaled by xi, the
+// tangential one kept (unlike the box walls' course rule, which scales it by xi too: a segment is the
+// limit of a disk, and that is what its tests compare with). On the body n is the segment's own unit
+// normal (exact reflection angles, no measured direction); at an end point, n = (E - x) / |E - x| with
+// the measured distance, computed as collide_pair computes it, so an end point is bit for bit a disk of
+// mass 2^60 times the disk's at rest there.
 #pragma once
 
 #include "core/scalar_math.hpp"
+#include "core/segment.hpp"
 
 namespace ede {
 
@@ -51,6 +59,38 @@ inline void collide_wall(bool vertical, T xi, T& vx, T& vy) {
     vx = xi * vx;
     vy = -xi * vy;
   }
+}
+
+// v' = v - k (v.n) n along a unit normal (nx, ny), k = 1 + xi.
+template <class T>
+inline void reflect_unit(T nx, T ny, T one_plus_xi, T& vx, T& vy) {
+  const T vn = (T(0) - vx) * nx + (T(0) - vy) * ny;  // collide_pair's dv.n with v_j = 0
+  const T k = one_plus_xi * vn;
+  vx = vx + k * nx;
+  vy = vy + k * ny;
+}
+
+// A disk whose centre is at (x, y) at contact hits segment s: on its body when the centre projects
+// strictly between the end points, else at the nearer end point; but if the disk is not moving towards
+// that part (v.m <= 0) and is moving towards the other one (the body, or the end point nearer by the
+// projection), the other one. Only round-off makes the two differ: a grazing hit within ~1e-9 r of an end
+// point is predicted at the end point while the centre projects onto the body; reflecting a receding disk
+// off the body would turn it into the segment. Neither approached: the velocity is kept. `one_plus_xi`
+// is the segment's (or 2 when the TC model makes the collision elastic).
+template <class T>
+inline void collide_segment(const Segment<T>& s, T x, T y, T one_plus_xi, T& vx, T& vy) {
+  const T along = segment_along(s, x, y);
+  const bool below = segment_height(s, x, y) < T(0);
+  const T bx = below ? s.nx : -s.nx, by = below ? s.ny : -s.ny;  // the body's normal, towards the line
+  const bool body_in = vx * bx + vy * by > T(0);
+  const bool on_body = along > T(0) && along < s.length;
+  if (on_body && body_in) return reflect_unit(bx, by, one_plus_xi, vx, vy);
+  const bool near_a = along < s.length / T(2);
+  const T dx = (near_a ? s.ax : s.bx) - x, dy = (near_a ? s.ay : s.by) - y;
+  const T dist = ede::sqrt(dx * dx + dy * dy);
+  const T ex = dx / dist, ey = dy / dist;  // towards the end point
+  if (vx * ex + vy * ey > T(0)) return reflect_unit(ex, ey, one_plus_xi, vx, vy);
+  if (!on_body && body_in) reflect_unit(bx, by, one_plus_xi, vx, vy);
 }
 
 }  // namespace ede

@@ -1,5 +1,5 @@
 // Effects: the small policy types an Engine is instantiated with, one axis per kind of physics a scene
-// can switch on. Three axes of two, and the engine table (engine_factory.hpp) builds five of the eight.
+// can switch on. Four axes of two, and the engine table (engine_factory.hpp) builds six of the sixteen.
 //
 // The engine branches on them with `if constexpr`, so code for an effect a scene does not use is not
 // compiled into that scene's engine: an elastic gas has no restitution, no TC bookkeeping, no energy
@@ -45,6 +45,18 @@ struct NoField {
 };
 struct UniformGravity {
   static constexpr bool kGravity = true;
+};
+
+// Wall segments inside the box (core/segment.hpp): each disk predicts against the segments listed in its
+// cell (segment_cells.hpp) and resolves segment events. Without them (every scene before segments
+// existed) none of that is compiled in. One instantiation carries them: walls, Dissipative (an elastic
+// segment computes exactly what an elastic rule would: 1 + xi = 2), no gravity (a parabola against a
+// slanted segment is a quartic the engine does not solve yet: scenes with both are refused).
+struct NoSegments {
+  static constexpr bool kSegments = false;
+};
+struct WithSegments {
+  static constexpr bool kSegments = true;
 };
 
 // The pair contact-time root: a function, not a flag. The library's engines use the stable form of

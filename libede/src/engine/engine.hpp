@@ -105,13 +105,14 @@ enum class EngineKind {
   PeriodicDissipative,  // restitution below 1 and/or the TC model, periodic box
   WallsElastic,         // an elastic gas in a walled box
   WallsDissipative,     // restitution below 1 (pairs or walls) and/or the TC model, walled box
-  WallsGravity,         // gravity, elastic or not (walls only); computes any walled run
+  WallsGravity,         // gravity, elastic or not (walls only); computes any walled run without segments
+  WallsSegments,        // wall segments inside a walled box, elastic or not, without gravity
 };
 const char* to_string(EngineKind kind);  // "walls, dissipative", ...
 // The engine a run needs: the one with the fewest effects compiled in that computes it.
 EngineKind engine_kind_for(const EngineOptions& options);
 // Whether engine `kind` computes the run `options` describes (the boundary matches, gravity only in
-// WallsGravity, restitution below 1 or TC not in an elastic engine).
+// WallsGravity, restitution below 1 or TC not in an elastic engine, segments only in WallsSegments).
 bool engine_can_run(EngineKind kind, const EngineOptions& options);
 
 // A new engine for `initial`; with `resume`, the engine continues from that rebuild point instead, and

@@ -52,6 +52,9 @@ Status check_engine_input(const InitialState& init, const EngineOptions& options
   if (!(ph.tc >= 0) || !finite(ph.tc)) return Error{"tc must be finite and >= 0"};
   const bool periodic = options.boundary == BoundaryKind::Periodic;
   if (Status s = check_initial_state(init, options.boundary, "the initial state"); !s) return s;
+  if (Status s = check_segments(ph.segments, init.lx, init.ly, options.boundary, ph.has_gravity(), "the physics"); !s)
+    return s;
+  if (Status s = check_disks_clear_of_segments(init, ph.segments, "the initial state"); !s) return s;
   if (periodic && (init.lx < 3 * 2 * max_radius * (1 + 1e-6) || init.ly < 3 * 2 * max_radius * (1 + 1e-6))) {
     std::ostringstream m;
     m << "a periodic box must be at least three largest diameters wide on each side (largest diameter "

@@ -32,7 +32,9 @@
 #include "engine/predict_crossing.hpp"
 #include "engine/predict_pair.hpp"
 #include "engine/predict_wall.hpp"
+#include "engine/segment_cells.hpp"
 #include "core/scalar_math.hpp"
+#include "core/segment.hpp"
 
 namespace ede {
 
@@ -49,8 +51,11 @@ GridShape grid_shape_for(double lx, double ly, double max_radius, std::size_t di
 // allows it (periodic: n >= 2 reach + 3 on each side), else every disk in the grid.
 GridShape engine_grid_for(const InitialState& init, bool periodic, Algorithm algorithm);
 
-template <class T, class Boundary, class Dissipation, class Field = NoField, class Contact = StableContact>
+template <class T, class Boundary, class Dissipation, class Field = NoField, class Contact = StableContact,
+          class Walls = NoSegments>
 class Engine final : public EngineApi<T> {
+  static constexpr bool kSegments = Walls::kSegments;
+  static_assert(!kSegments || (!Boundary::kPeriodic && !Field::kGravity), "segments need walls and no gravity");
   static constexpr bool kPeriodic = Boundary::kPeriodic;
   static constexpr bool kDissipative = Dissipation::kDissipative;
   static constexpr bool kGravity = Field::kGravity;
@@ -83,6 +88,7 @@ class Engine final : public EngineApi<T> {
     b_noise2_ = b_noise2_for(std::max(lx_, ly_));
     grid_.reset(shape.nx, shape.ny, lx_, ly_, p_.disk);
     find_big_disks(init, shape.split);
+    if constexpr (kSegments) setup_segments(options.physics, init, shape);
     queue_.reset(static_cast<std::uint32_t>(p_.size()));
     pred_.assign(p_.size(), Prediction{kNever<T>, kNever<T>, -1, 0, EventKind::Pair, kCrossRight});
     stall_limit_ = options.stall_limit ? options.stall_limit
@@ -114,6 +120,7 @@ class Engine final : public EngineApi<T> {
       s << "elastic";
     }
     if constexpr (kGravity) s << ", gravity (" << opt_.physics.gravity[0] << ", " << opt_.physics.gravity[1] << ")";
+    if constexpr (kSegments) s << ", " << seg_.size() << (seg_.size() == 1 ? " segment" : " segments");
     s << Contact::kLabel;
     s << ", grid " << grid_.nx() << "x" << grid_.ny();
     if (!big_.empty()) s << " + " << big_.size() << (big_.size() == 1 ? " big disk" : " big disks");
@@ -124,7 +131,7 @@ class Engine final : public EngineApi<T> {
     return p_.disk.capacity() * sizeof(Disk<T>) + p_.mass.capacity() * sizeof(T) +
            p_.species.capacity() * sizeof(std::int32_t) + p_.last_collision.capacity() * sizeof(T) +
            pred_.capacity() * sizeof(Prediction) + grid_.memory_bytes() + queue_.memory_bytes() +
-           big_.capacity() * sizeof(BigDisk);
+           big_.capacity() * sizeof(BigDisk) + seg_.capacity() * sizeof(Segment<T>) + seg_cells_.memory_bytes();
   }
 
   RunStatus run(std::uint64_t max_events) override { return run_until(kNever<T>, max_events); }
@@ -191,6 +198,14 @@ class Engine final : public EngineApi<T> {
         problems << "disks " << i << " and " << k << " overlap by " << (contact - distance) / contact
                  << " of their contact distance; ";
     });
+    if constexpr (kSegments)
+      for (std::size_t i = 0; i < p_.size(); ++i)
+        for (std::size_t s = 0; s < seg_.size(); ++s) {
+          const Position2<T> pi = pos_at(p_.disk[i]);
+          const double distance = double(segment_distance(seg_[s], pi.x, pi.y)), r = double(p_.disk[i].r);
+          if (distance < r * (1 - tolerance))
+            problems << "disk " << i << " overlaps segment " << s << " by " << (r - distance) / r << " of its radius; ";
+        }
     return problems.str();
   }
 
@@ -460,6 +475,40 @@ class Engine final : public EngineApi<T> {
       for (std::int32_t dx = -b.reach_x; dx <= b.reach_x; ++dx) visit_cell(b.id, cx + dx, cy + dy, f);
   }
 
+  // --- wall segments (WithSegments only) --------------------------------------------------------------
+  // Segments with their cell lists: a cell lists those within the largest small radius of it (with a
+  // margin for a centre a hair past its cell's side); a big disk, whose reach is wider, tries them all.
+  void setup_segments(const PhysicsSpec& ph, const InitialState& init, const GridShape& shape) {
+    std::vector<std::array<double, 4>> ends;
+    for (const SegmentSpec& s : ph.segments) {
+      seg_.push_back(make_segment(T(s.from[0]), T(s.from[1]), T(s.to[0]), T(s.to[1]), T(s.restitution)));
+      ends.push_back({s.from[0], s.from[1], s.to[0], s.to[1]});
+    }
+    double largest = 0;  // the largest radius in the cell lists (every disk when none is big)
+    for (const double r : init.radius)
+      if (r <= shape.split.big_radius) largest = std::max(largest, r);
+    const double reach = largest * (1 + 1e-6) + 1e-9 * std::max(double(lx_), double(ly_));
+    seg_cells_.build(ends, grid_.nx(), grid_.ny(), double(lx_), double(ly_), reach);
+  }
+
+  // Disk d's earliest segment hit, from its record (the time does not depend on now: replay predicts it
+  // from the same record), against the segments of `cell` (every segment for a big disk).
+  void scan_segments(const Disk<T>& d, std::int32_t cell, bool big, Candidate<T>& best) const {
+    const auto consider = [&](std::int32_t s) {
+      const T dt = segment_contact_time(seg_[std::size_t(s)], d.x, d.y, d.vx, d.vy, d.r, b_noise2_);
+      if (dt == kNever<T>) return;
+      T t = d.t + dt;
+      if (t < now_) t = now_;
+      const Candidate<T> c{t, EventKind::Segment, s};
+      if (c.before(best)) best = c;
+    };
+    if (big) {
+      for (std::size_t s = 0; s < seg_.size(); ++s) consider(std::int32_t(s));
+      return;
+    }
+    for (const std::int32_t* s = seg_cells_.begin(cell); s != seg_cells_.end(cell); ++s) consider(*s);
+  }
+
   // Full prediction for disk i at now_: walls, pairs in the 3 x 3 cells, cell crossing.
   void predict(std::int32_t i) {
     const Disk<T>& d = p_.disk[i];
@@ -473,6 +522,7 @@ class Engine final : public EngineApi<T> {
     const std::int32_t cx = grid_.cell_x(cell), cy = grid_.cell_y(cell);
     std::int32_t reach_x = 1, reach_y = 1;
     const bool big = !big_.empty() && is_big(d);
+    if constexpr (kSegments) scan_segments(d, cell, big, best);
     if (big) {
       const BigDisk& b = big_entry(i);
       reach_x = b.reach_x, reach_y = b.reach_y;
@@ -546,6 +596,9 @@ class Engine final : public EngineApi<T> {
     switch (kind) {
       case EventKind::Pair: resolve_pair(i, pr.partner); break;
       case EventKind::Wall: resolve_wall(i, pr.partner); break;
+      case EventKind::Segment:
+        if constexpr (kSegments) resolve_segment(i, pr.partner);
+        break;
       default: cross_cell(i, pr.cross_dir, kind); break;
     }
     return true;
@@ -630,6 +683,26 @@ class Engine final : public EngineApi<T> {
     predict(i);
   }
 
+  // A disk hits wall segment s (core/segment.hpp): the segment's rule (collide_segment) at the disk's
+  // position now, which tells body from end point; like a wall, it leaves no partner to skip.
+  void resolve_segment(std::int32_t i, std::int32_t s) {
+    advance(i);
+    Disk<T>& d = p_.disk[i];
+    const T vx0 = d.vx, vy0 = d.vy;
+    const bool by_tc = tc_elastic(i, -1);
+    const double ke_before = disk_energy(i);
+    collide_segment(seg_[std::size_t(s)], d.x, d.y, by_tc ? T(2) : seg_[std::size_t(s)].one_plus_xi, d.vx, d.vy);
+    ke_ += disk_energy(i) - ke_before;
+    note_if_too_slow(i);
+    if (tc_model()) p_.last_collision[i] = now_;
+    ++d.counter;
+    d.last_partner = -1;
+    ++counts_.by_kind[int(EventKind::Segment)];
+    if (by_tc) ++counts_.tc_elastic;
+    if (!sinks_.empty()) emit({now_, EventKind::Segment, by_tc, i, s, d.vx, d.vy, T(0), T(0), vx0, vy0, T(0), T(0)});
+    predict(i);
+  }
+
   // Moves disk i into the neighbouring cell; at a periodic edge its stored position wraps by one box
   // length (a state change, so it is an event sinks see). Then only the three cells that became
   // neighbours (for a big disk, the strip of its reach block) and the big disks are searched:
@@ -665,6 +738,7 @@ class Engine final : public EngineApi<T> {
     else
       for (std::int32_t k = -reach_x; k <= reach_x; ++k) scan_cell(i, pi, vi, cx + k, cy + step_y * reach_y, best);
     if (!big_.empty()) scan_big(i, pi, vi, big, best);
+    if constexpr (kSegments) scan_segments(p_.disk[i], grid_.cell_of(i), big, best);
     if (best.time != pr.t_coll || best.kind != pr.coll_kind || best.partner != pr.partner) {
       pr.t_coll = best.time;
       pr.coll_kind = best.kind;
@@ -857,6 +931,8 @@ class Engine final : public EngineApi<T> {
   bool uniform_pairs_ = true;
   T gx_ = 0, gy_ = 0;          // gravity (UniformGravity only)
   std::vector<BigDisk> big_;   // disks outside the cell lists (big_disks.hpp), by id
+  std::vector<Segment<T>> seg_;  // wall segments (WithSegments only), in the scene's order
+  SegmentCells seg_cells_;       // the segments each cell looks at
   T big_radius_ = kNever<T>;
   static constexpr const char* kWallName[4] = {"left", "right", "bottom", "top"};
   T b_noise2_ = 0;  // round-off floor of b, geometry.hpp

@@ -6,10 +6,11 @@
 //   WallsElastic         walls     Elastic      NoField         elastic scenes in a walled box
 //   WallsDissipative     walls     Dissipative  NoField         restitution < 1 (pairs or walls) and/or TC, walls
 //   WallsGravity         walls     Dissipative  UniformGravity  every scene with gravity, elastic ones too
+//   WallsSegments        walls     Dissipative  NoField         every scene with wall segments (WithSegments)
 //
-// Five per scalar type: make_engine_as<T> below names them all, and engine_float.cpp, engine_double.cpp,
+// Six per scalar type: make_engine_as<T> below names them all, and engine_float.cpp, engine_double.cpp,
 // engine_long_double.cpp (and engine_float128.cpp where EDE_HAVE_FLOAT128) instantiate it once each, so
-// 20 engines (15 without __float128). Why not fewer: the elastic gas is what the speed targets are about,
+// 24 engines (18 without __float128). Why not fewer: the elastic gas is what the speed targets are about,
 // and it must not pay for restitution, energy accounting or TC (Elastic), for walls in a periodic box
 // (Boundary) or for parabolas (Field). Why not more: within Dissipative, restitution, per-pair restitution
 // and TC cost nothing measurable (ede-bench effects: 0.98-1.00 x the elastic gas per event), so they are
@@ -58,6 +59,10 @@ Result<std::unique_ptr<EngineApi<T>>> make_engine_as(EngineKind kind, const Init
       break;
     case EngineKind::WallsGravity:
       e = std::make_unique<Engine<T, WallsBoundary, Dissipative, UniformGravity>>(init, o, shape, resume);
+      break;
+    case EngineKind::WallsSegments:
+      e = std::make_unique<Engine<T, WallsBoundary, Dissipative, NoField, StableContact, WithSegments>>(init, o, shape,
+                                                                                                     resume);
       break;
   }
   return e;

@@ -15,6 +15,7 @@ const char* to_string(EventKind k) {
     case EventKind::Wrap: return "wrap";
     case EventKind::Action: return "action";
     case EventKind::Sample: return "sample";
+    case EventKind::Segment: return "segment";
   }
   return "?";
 }
@@ -44,12 +45,14 @@ const char* to_string(EngineKind k) {
     case EngineKind::WallsElastic: return "walls, elastic";
     case EngineKind::WallsDissipative: return "walls, dissipative";
     case EngineKind::WallsGravity: return "walls, gravity";
+    case EngineKind::WallsSegments: return "walls, segments";
   }
   return "?";
 }
 
 EngineKind engine_kind_for(const EngineOptions& o) {
   const bool elastic = o.physics.elastic();
+  if (!o.physics.segments.empty()) return EngineKind::WallsSegments;
   if (o.boundary == BoundaryKind::Periodic) return elastic ? EngineKind::PeriodicElastic : EngineKind::PeriodicDissipative;
   if (o.physics.has_gravity()) return EngineKind::WallsGravity;
   return elastic ? EngineKind::WallsElastic : EngineKind::WallsDissipative;
@@ -57,13 +60,14 @@ EngineKind engine_kind_for(const EngineOptions& o) {
 
 bool engine_can_run(EngineKind k, const EngineOptions& o) {
   const bool periodic = o.boundary == BoundaryKind::Periodic, gravity = o.physics.has_gravity();
-  const bool elastic = o.physics.elastic();
+  const bool elastic = o.physics.elastic(), segments = !o.physics.segments.empty();
   switch (k) {
-    case EngineKind::PeriodicElastic: return periodic && !gravity && elastic;
-    case EngineKind::PeriodicDissipative: return periodic && !gravity;
-    case EngineKind::WallsElastic: return !periodic && !gravity && elastic;
-    case EngineKind::WallsDissipative: return !periodic && !gravity;
-    case EngineKind::WallsGravity: return !periodic;
+    case EngineKind::PeriodicElastic: return periodic && !gravity && elastic && !segments;
+    case EngineKind::PeriodicDissipative: return periodic && !gravity && !segments;
+    case EngineKind::WallsElastic: return !periodic && !gravity && elastic && !segments;
+    case EngineKind::WallsDissipative: return !periodic && !gravity && !segments;
+    case EngineKind::WallsGravity: return !periodic && !segments;
+    case EngineKind::WallsSegments: return !periodic && !gravity;
   }
   return false;
 }

@@ -18,7 +18,9 @@
 //               is smaller or nothing is predicted (the previous key is 0 at a chunk's first event)
 //   raw         empty
 //   residuals   varint zigzag(key(v) - key(prediction)): pair v_i'x, v_i'y, v_j'x, v_j'y against the
-//               collision rule; wall v'x, v'y against the wall's rule
+//               collision rule; wall v'x, v'y against the wall's rule; segment v'x, v'y against the
+//               segment's rule (and in encoding 1 against the velocity before the event)
+// Segment events (kind 6) take the disk in `disks` and the segment's index in `partners`, like a wall.
 // Both are lossless whatever the predictions' quality: a residual of 0 costs one byte, a bad prediction a
 // few more. Rejected for encoding 2: keeping v_i' raw (60 % of a version 1 log) and the momentum
 // prediction of v_j' (it is exact only when the rule's own v_j' happens to round the same way).
@@ -62,6 +64,9 @@ inline T apply_residual(u128 r, T predicted) {
 // Kind byte of encoding 2: this collision was made elastic by the TC model (the rule uses 1 + xi = 2).
 constexpr unsigned char kTcElasticFlag = 0x10;
 constexpr std::uint32_t kLatestColumnEncoding = 2;
+// A resumable keyframe's engineCounts: the event kinds there were before segments (pair .. sample), stale,
+// tc_elastic, and then the segment events only in a run with segments (FORMAT.md, "Keyframe").
+constexpr int kCountedKindsV2 = 6;
 
 // The time a version 2 log predicts for an event from the state just before it (kNever: no prediction).
 template <class T>
@@ -71,6 +76,7 @@ inline T predicted_event_time(const EventPhysics<T>& ph, const Particles<T>& s, 
     case EventKind::Pair: return predict_pair_time(ph, s, i, j);
     case EventKind::Wall: return predict_wall_time(ph, s.disk[std::size_t(i)], j);
     case EventKind::Wrap: return predict_wrap_time(ph, s.disk[std::size_t(i)], j);
+    case EventKind::Segment: return predict_segment_time(ph, s.disk[std::size_t(i)], j);
     default: return kNever<T>;
   }
 }
@@ -125,18 +131,25 @@ class ChunkEncoder {
       case EventKind::Pair: add_pair_v1(e); break;
       case EventKind::Wall: add_wall_v1(e); break;
       case EventKind::Wrap: add_ids(e); break;
+      case EventKind::Segment:
+        add_ids(e);
+        residuals_.varint(residual(e.vix, e.vix0));
+        residuals_.varint(residual(e.viy, e.viy0));
+        break;
       default: break;  // Action: the kind and time say it all
     }
   }
 
   void add_v2(const EventOutcome<T>& e, const Particles<T>& s) {
-    const bool collision = e.kind == EventKind::Pair || e.kind == EventKind::Wall;
+    const bool collision = e.kind == EventKind::Pair || e.kind == EventKind::Wall || e.kind == EventKind::Segment;
     bool tc = collision && e.tc_elastic;
     // An event that does not say (a converted version 1 log) gets the flag when only the elastic rule
     // predicts it exactly; in a run the engine's own flag is always the one that does.
     if (collision && !tc && physics_.tc_model && !rule_exact(e, s, false) && rule_exact(e, s, true)) tc = true;
     kinds_.byte(static_cast<unsigned char>(static_cast<unsigned char>(e.kind) | (tc ? kTcElasticFlag : 0)));
-    if (e.kind == EventKind::Pair || e.kind == EventKind::Wall || e.kind == EventKind::Wrap) add_ids(e);
+    if (e.kind == EventKind::Pair || e.kind == EventKind::Wall || e.kind == EventKind::Wrap ||
+        e.kind == EventKind::Segment)
+      add_ids(e);
     add_time_v2(e.time, predicted_event_time(physics_, s, e.kind, e.i, e.j));
     if (e.kind == EventKind::Pair) {
       T v[4];
@@ -150,6 +163,11 @@ class ChunkEncoder {
       predict_wall_velocity(physics_, s, e.i, e.j, e.time, tc, v);
       residuals_.varint(residual(e.vix, v[0]));
       residuals_.varint(residual(e.viy, v[1]));
+    } else if (e.kind == EventKind::Segment) {
+      T v[2];
+      predict_segment_velocity(physics_, s, e.i, e.j, e.time, tc, v);
+      residuals_.varint(residual(e.vix, v[0]));
+      residuals_.varint(residual(e.viy, v[1]));
     }
   }
 
@@ -159,7 +177,10 @@ class ChunkEncoder {
       predict_pair_velocities(physics_, s, e.i, e.j, e.time, tc, v);
       return same_bits(v[0], e.vix) && same_bits(v[1], e.viy) && same_bits(v[2], e.vjx) && same_bits(v[3], e.vjy);
     }
-    predict_wall_velocity(physics_, s, e.i, e.j, e.time, tc, v);
+    if (e.kind == EventKind::Segment)
+      predict_segment_velocity(physics_, s, e.i, e.j, e.time, tc, v);
+    else
+      predict_wall_velocity(physics_, s, e.i, e.j, e.time, tc, v);
     return same_bits(v[0], e.vix) && same_bits(v[1], e.viy);
   }
   static bool same_bits(T a, T b) { return ordered_key(a) == ordered_key(b); }
@@ -330,7 +351,8 @@ inline bool apply_event(const DecodedEvent<T>& e, Particles<T>& p, T lx, T ly) {
       a.vx = e.vix, a.vy = e.viy, b.vx = e.vjx, b.vy = e.vjy;
       return finite_record(a) && finite_record(b);
     }
-    case EventKind::Wall: {
+    case EventKind::Wall:
+    case EventKind::Segment: {
       Disk<T>& a = p.disk[std::size_t(e.i)];
       advance_disk(a, e.time, p.gx, p.gy);
       a.vx = e.vix, a.vy = e.viy;

@@ -120,9 +120,9 @@ bool ChunkDecoder<T>::read_kind(DecodedEvent<T>& e) {
   const unsigned char k = static_cast<unsigned char>(kind & ~flag);
   e.kind = static_cast<EventKind>(k);
   const bool known = e.kind == EventKind::Pair || e.kind == EventKind::Wall || e.kind == EventKind::Wrap ||
-                     e.kind == EventKind::Action;
+                     e.kind == EventKind::Action || e.kind == EventKind::Segment;
   if (!known) return fail("unknown event kind " + std::to_string(kind));
-  if (e.tc_elastic && e.kind != EventKind::Pair && e.kind != EventKind::Wall)
+  if (e.tc_elastic && e.kind != EventKind::Pair && e.kind != EventKind::Wall && e.kind != EventKind::Segment)
     return fail("a TC flag on an event that is not a collision");
   return true;
 }
@@ -144,6 +144,17 @@ bool ChunkDecoder<T>::read_ids(DecodedEvent<T>& e) {
       if (!read_disk(disks_, e.i)) return false;
       if (!partners_.varint(wall, 8) || wall > 3) return fail("a wall id is missing or out of range");
       e.j = std::int32_t(wall);
+      return true;
+    }
+    case EventKind::Segment: {
+      // Version 2 headers list the segments (FORMAT.md); a version 1 log's do not, so only the id's width
+      // is checked there (decoding a version 1 segment event needs no geometry).
+      u128 seg;
+      if (!read_disk(disks_, e.i)) return false;
+      const bool listed = encoding_ >= 2;
+      if (!partners_.varint(seg, 32) || seg > u128(0x7fffffff) || (listed && seg >= physics_.segments.size()))
+        return fail("a segment index is missing or out of range");
+      e.j = std::int32_t(seg);
       return true;
     }
     case EventKind::Wrap: {
@@ -176,6 +187,10 @@ bool ChunkDecoder<T>::read_fields(const Particles<T>& p, DecodedEvent<T>& e) {
       const bool vertical = e.j == kWallLeft || e.j == kWallRight;
       return read_residual(vertical ? -ax : ax, e.vix) && read_residual(vertical ? ay : -ay, e.viy);
     }
+    case EventKind::Segment: {
+      const T ax = p.vx_at(std::size_t(e.i), e.time), ay = p.vy_at(std::size_t(e.i), e.time);
+      return read_residual(ax, e.vix) && read_residual(ay, e.viy);
+    }
     default: return true;
   }
 }
@@ -199,6 +214,11 @@ bool ChunkDecoder<T>::read_v2(const Particles<T>& p, DecodedEvent<T>& e) {
   if (e.kind == EventKind::Wall) {
     T v[2];
     predict_wall_velocity(physics_, p, e.i, e.j, e.time, e.tc_elastic, v);
+    return read_residual(v[0], e.vix) && read_residual(v[1], e.viy);
+  }
+  if (e.kind == EventKind::Segment) {
+    T v[2];
+    predict_segment_velocity(physics_, p, e.i, e.j, e.time, e.tc_elastic, v);
     return read_residual(v[0], e.vix) && read_residual(v[1], e.viy);
   }
   return true;

@@ -26,6 +26,7 @@
 #include "core/event.hpp"
 #include "core/geometry.hpp"
 #include "core/particles.hpp"
+#include "core/segment.hpp"
 #include "engine/collide.hpp"
 #include "engine/predict_pair.hpp"
 
@@ -42,6 +43,9 @@ struct EventPhysics {
   std::vector<T> one_plus_xi{T(2)};  // species x species, row-major: 1 + xi of the pair
   T xi_wall[4] = {1, 1, 1, 1};
   bool tc_model = false;  // writer only: the run may make collisions elastic (ChunkEncoder's TC flag)
+  // Wall segments, built by make_segment from the header's scalars as the engine builds them from the
+  // scene's doubles converted to T (the same values, so the same unit vectors).
+  std::vector<Segment<T>> segments;
 
   // The box as the engine sets it up (engine_core.hpp: lx_, half_lx_, b_noise2_).
   static EventPhysics box(double lx, double ly, bool periodic, T gx, T gy) {
@@ -97,6 +101,27 @@ inline void predict_wall_velocity(const EventPhysics<T>& ph, const Particles<T>&
     collide_wall_elastic(vertical, v[0], v[1]);
   else
     collide_wall(vertical, ph.xi_wall[wall & 3], v[0], v[1]);
+}
+
+// Velocity after disk i hits segment s at time t (Engine::resolve_segment): a copy of the record brought
+// to t, then the segment's rule with its 1 + xi (2 with the TC flag).
+template <class T>
+inline void predict_segment_velocity(const EventPhysics<T>& ph, const Particles<T>& p, std::int32_t i,
+                                     std::int32_t s, T t, bool tc_elastic, T v[2]) {
+  Disk<T> d = p.disk[std::size_t(i)];
+  advance_disk(d, t, ph.gx, ph.gy);
+  v[0] = d.vx, v[1] = d.vy;
+  if (s < 0 || std::size_t(s) >= ph.segments.size()) return;  // a version 1 log's header lists no segments
+  const Segment<T>& g = ph.segments[std::size_t(s)];
+  collide_segment(g, d.x, d.y, tc_elastic ? T(2) : g.one_plus_xi, v[0], v[1]);
+}
+
+// Time disk i hits segment s, from its record alone (Engine::scan_segments without the clamp to now).
+template <class T>
+inline T predict_segment_time(const EventPhysics<T>& ph, const Disk<T>& d, std::int32_t s) {
+  if (s < 0 || std::size_t(s) >= ph.segments.size()) return kNever<T>;
+  const T dt = segment_contact_time(ph.segments[std::size_t(s)], d.x, d.y, d.vx, d.vy, d.r, ph.b_noise2);
+  return dt == kNever<T> ? kNever<T> : d.t + dt;
 }
 
 // Time of pair (i, j): predicted by the disk whose record is later (i on a tie), at now = that record's

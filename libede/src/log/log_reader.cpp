@@ -215,8 +215,10 @@ Status LogReader::read_header_record(std::uint64_t offset, std::uint64_t payload
       h.mass.size() != std::size_t(h.disks) * w || h.species.size() != h.disks)
     return Error{at(path_, offset) + ": the header's per-disk data does not match its disk count", ErrorKind::Corrupt};
   const std::size_t species = std::max<std::size_t>(1, h.species_names.size());
-  if (h.column_encoding >= 2 &&
-      (h.pair_one_plus_xi.size() != species * species * w || h.wall_restitution.size() != 4 * w))
+  // wallRestitution: the four box walls, then five scalars per wall segment (FORMAT.md).
+  const bool walls_ok = h.wall_restitution.size() >= 4 * w && (h.wall_restitution.size() / w - 4) % 5 == 0 &&
+                        h.wall_restitution.size() % w == 0;
+  if (h.column_encoding >= 2 && (h.pair_one_plus_xi.size() != species * species * w || !walls_ok))
     return Error{at(path_, offset) + ": the header's restitution tables do not match its species count",
                  ErrorKind::Corrupt};
   for (const std::uint32_t s : h.species)

@@ -38,7 +38,7 @@ struct LogHeaderInfo {
   double gx = 0, gy = 0;  // gravity
   std::uint32_t column_encoding = 1;                   // 1 or 2: the format version's chunk columns
   std::vector<unsigned char> pair_one_plus_xi;         // version 2: S x S raw scalars (S species)
-  std::vector<unsigned char> wall_restitution;         // version 2: 4 raw scalars
+  std::vector<unsigned char> wall_restitution;         // version 2: 4 raw scalars, then 5 per segment
 };
 
 struct LogRecordRef {

@@ -20,7 +20,8 @@ bool loggable(unsigned char kind) {
     case EventKind::Pair:
     case EventKind::Wall:
     case EventKind::Wrap:
-    case EventKind::Action: return true;
+    case EventKind::Action:
+    case EventKind::Segment: return true;
     default: return false;
   }
 }

@@ -112,6 +112,9 @@ void LogRunInfo::set_restitution(const PhysicsSpec& physics) {
     if (a < n && b < n) pair_restitution[a * n + b] = pair_restitution[b * n + a] = pr.value;
   }
   for (int w = 0; w < 4; ++w) wall_restitution[w] = physics.wall(w);
+  segments.clear();
+  for (const SegmentSpec& s : physics.segments)
+    segments.insert(segments.end(), {s.from[0], s.from[1], s.to[0], s.to[1], s.restitution});
 }
 
 // What codes the columns: the encoder and, for version 2, the state as replay will have it before each
@@ -198,6 +201,10 @@ struct LogWriter<T>::Impl {
     for (const double xi : run.pair_restitution) physics.one_plus_xi.push_back(T(1) + T(xi));
     physics.one_plus_xi.resize(physics.species * physics.species, physics.one_plus_xi.empty() ? T(2) : physics.one_plus_xi[0]);
     for (int w = 0; w < 4; ++w) physics.xi_wall[w] = T(run.wall_restitution[w]);
+    for (std::size_t k = 0; k + 5 <= run.segments.size(); k += 5) {
+      const double* g = &run.segments[k];
+      physics.segments.push_back(make_segment(T(g[0]), T(g[1]), T(g[2]), T(g[3]), T(g[4])));
+    }
     physics.tc_model = run.tc_model;
     if (settings.format_version < 2) return;
     coder.replayed = p;
@@ -243,8 +250,9 @@ struct LogWriter<T>::Impl {
       const EventPhysics<T>& physics = coder.physics;  // set up at on_start, before any chunk is submitted
       set_data(h.initPairOnePlusXi(std::uint32_t(physics.one_plus_xi.size() * kScalarWidth<T>)),
                raw_scalars(physics.one_plus_xi));
-      set_data(h.initWallRestitution(std::uint32_t(4 * kScalarWidth<T>)),
-               raw_scalars(std::vector<T>(physics.xi_wall, physics.xi_wall + 4)));
+      std::vector<T> walls(physics.xi_wall, physics.xi_wall + 4);
+      for (const double v : run.segments) walls.push_back(T(v));
+      set_data(h.initWallRestitution(std::uint32_t(walls.size() * kScalarWidth<T>)), raw_scalars(walls));
     }
     // Set before the first chunk is submitted: the worker reads coder.run_id only after that. Format
     // version 1 predates run ids and keeps its bytes (its records carry 0: not checked).
@@ -306,10 +314,14 @@ struct LogWriter<T>::Impl {
     if (!p.last_collision.empty())
       set_data(k.initLastCollision(std::uint32_t(p.size() * kScalarWidth<T>)),
                scalar_column<T>(p.size(), [&](std::size_t i) { return p.last_collision[i]; }));
-    auto counts = k.initEngineCounts(kEventKindCount + 2);
-    for (int c = 0; c < kEventKindCount; ++c) counts.set(std::uint32_t(c), r.counts.by_kind[c]);
-    counts.set(kEventKindCount, r.counts.stale);
-    counts.set(kEventKindCount + 1, r.counts.tc_elastic);
+    // The six kinds before segments, stale, tc_elastic; then segment events only in runs with segments
+    // (FORMAT.md), so the keyframes of every other run keep their bytes.
+    const bool segments = !run.segments.empty();
+    auto counts = k.initEngineCounts(kCountedKindsV2 + 2 + (segments ? 1 : 0));
+    for (int c = 0; c < kCountedKindsV2; ++c) counts.set(std::uint32_t(c), r.counts.by_kind[c]);
+    counts.set(kCountedKindsV2, r.counts.stale);
+    counts.set(kCountedKindsV2 + 1, r.counts.tc_elastic);
+    if (segments) counts.set(kCountedKindsV2 + 2, r.counts.of(EventKind::Segment));
     k.setNextSample(r.next_sample_index);
     k.setNextAction(r.next_action_index);
     k.setSameTimeEvents(r.same_time_events);

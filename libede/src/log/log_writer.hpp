@@ -50,8 +50,10 @@ struct LogRunInfo {
   // S x S values for S = max(1, species) species, pair (a, b) at a S + b, and one per wall (WallId order).
   std::vector<double> pair_restitution{1};
   double wall_restitution[4] = {1, 1, 1, 1};
+  // Wall segments, five values each: ax, ay, bx, by, restitution (the header appends them to the walls').
+  std::vector<double> segments;
   std::string engine_version, compiler, compile_flags;  // empty: this build's (a converted log keeps its own)
-  // pair_restitution and wall_restitution from the scene's physics, as the engine builds its table.
+  // pair_restitution, wall_restitution and segments from the scene's physics, as the engine builds them.
   void set_restitution(const PhysicsSpec& physics);
   static LogRunInfo from(const Scene& scene, const EngineOptions& options, const std::vector<std::string>& species);
 };

@@ -26,8 +26,10 @@ std::string exact(T v) {
   return exact_text(static_cast<long double>(v), scalar_kind_of<T>());
 }
 
-inline bool has_disk(EventKind k) { return k == EventKind::Pair || k == EventKind::Wall || k == EventKind::Wrap; }
-inline bool has_vi(EventKind k) { return k == EventKind::Pair || k == EventKind::Wall; }
+inline bool has_disk(EventKind k) {
+  return k == EventKind::Pair || k == EventKind::Wall || k == EventKind::Wrap || k == EventKind::Segment;
+}
+inline bool has_vi(EventKind k) { return k == EventKind::Pair || k == EventKind::Wall || k == EventKind::Segment; }
 
 // An event in words, for reports: "t = 0.25, pair of disks 3 and 17, v_i = (1, 2), v_j = (3, 4)".
 template <class T>
@@ -44,6 +46,7 @@ std::string describe(const ReplayedEvent<T>& e) {
     case EventKind::Wrap:
       s += " of disk " + std::to_string(e.i) + " across the " + (known_j ? wraps[e.j] : std::to_string(e.j)) + " edge";
       break;
+    case EventKind::Segment: s += " of disk " + std::to_string(e.i) + " on wall segment " + std::to_string(e.j); break;
     default: break;
   }
   if (has_vi(e.kind)) s += ", v_i = (" + exact(e.vix) + ", " + exact(e.viy) + ")";
@@ -58,7 +61,11 @@ std::string first_difference(const ReplayedEvent<T>& a, const ReplayedEvent<T>& 
   if (!same_bits(a.time, b.time)) return "time";
   if (a.kind != b.kind) return "kind";
   if (a.i != b.i) return "disk i";
-  if (a.j != b.j) return a.kind == EventKind::Pair ? "disk j" : a.kind == EventKind::Wall ? "wall" : "direction";
+  if (a.j != b.j)
+    return a.kind == EventKind::Pair      ? "disk j"
+           : a.kind == EventKind::Wall    ? "wall"
+           : a.kind == EventKind::Segment ? "segment"
+                                          : "direction";
   if (has_vi(a.kind) && !same_bits(a.vix, b.vix)) return "vix";
   if (has_vi(a.kind) && !same_bits(a.viy, b.viy)) return "viy";
   if (a.kind == EventKind::Pair && !same_bits(a.vjx, b.vjx)) return "vjx";

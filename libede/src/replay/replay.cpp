@@ -106,7 +106,8 @@ Result<KeyframeData<T>> read_keyframe(const LogReader& log, const LogRecordRef& 
         for (std::size_t i = 0; i < n; ++i) k.last_collision[i] = scalar_from_bytes<T>(raw.data() + i * kScalarWidth<T>);
       }
       for (const std::uint64_t c : kf.getEngineCounts()) k.counts.push_back(c);
-      if (k.counts.size() != std::size_t(kEventKindCount + 2)) return Error{where + ": the engine counters are malformed"};
+      if (k.counts.size() != std::size_t(kCountedKindsV2 + 2) && k.counts.size() != std::size_t(kCountedKindsV2 + 3))
+        return Error{where + ": the engine counters are malformed"};
       k.next_sample = kf.getNextSample();
       k.next_action = kf.getNextAction();
       k.same_time_events = kf.getSameTimeEvents();
@@ -150,11 +151,18 @@ Result<std::unique_ptr<Replay<T>>> Replay<T>::create(std::shared_ptr<const LogRe
   if (h.column_encoding >= 2) {
     const std::size_t s = std::max<std::size_t>(1, h.species_names.size());
     std::vector<T> table, walls;
-    if (!read_raw_scalars(h.pair_one_plus_xi, s * s, table) || !read_raw_scalars(h.wall_restitution, 4, walls))
+    const std::size_t wall_values = h.wall_restitution.size() / kScalarWidth<T>;  // 4 + 5 per segment (checked)
+    if (!read_raw_scalars(h.pair_one_plus_xi, s * s, table) || !read_raw_scalars(h.wall_restitution, wall_values, walls) ||
+        wall_values < 4 || (wall_values - 4) % 5 != 0)
       return Error{log->path() + ": the header's restitution tables are malformed"};
     r->physics_.species = s;
     r->physics_.one_plus_xi = table;
     for (int w = 0; w < 4; ++w) r->physics_.xi_wall[w] = walls[std::size_t(w)];
+    for (std::size_t k = 4; k + 5 <= walls.size(); k += 5) {
+      const T* g = &walls[k];
+      if (g[0] == g[2] && g[1] == g[3]) return Error{log->path() + ": the header lists a wall segment of zero length"};
+      r->physics_.segments.push_back(make_segment(g[0], g[1], g[2], g[3], g[4]));
+    }
   }
   if (Status s = r->load_keyframe(0); !s) return s.error();
   r->last_event_time_initial_ = r->time_;
@@ -409,9 +417,11 @@ Result<ResumePoint<T>> Replay<T>::resume_point(std::size_t keyframe) const {
     d.last_partner = kf.last_partner[i];
   }
   r.last_collision = kf.last_collision;
-  for (int c = 0; c < kEventKindCount; ++c) r.counts.by_kind[c] = kf.counts[std::size_t(c)];
-  r.counts.stale = kf.counts[kEventKindCount];
-  r.counts.tc_elastic = kf.counts[kEventKindCount + 1];
+  for (int c = 0; c < kCountedKindsV2; ++c) r.counts.by_kind[c] = kf.counts[std::size_t(c)];
+  r.counts.stale = kf.counts[kCountedKindsV2];
+  r.counts.tc_elastic = kf.counts[kCountedKindsV2 + 1];
+  if (kf.counts.size() > std::size_t(kCountedKindsV2 + 2))
+    r.counts.by_kind[int(EventKind::Segment)] = kf.counts[kCountedKindsV2 + 2];
   r.next_sample_index = kf.next_sample;
   r.next_action_index = kf.next_action;
   r.same_time_events = kf.same_time_events;

@@ -135,6 +135,10 @@ Result<StartedRun> start_from_state(const Scene& scene) {
   if (Status s = check_pair_names(scene, run.initial); !s) return s.error();
   if (Status s = check_initial_state(run.initial, scene.boundary, scene.source_name + " (start from " + path + ")"); !s)
     return s.error();
+  if (Status s = check_disks_clear_of_segments(run.initial, scene.physics.segments,
+                                               scene.source_name + " (start from " + path + ")");
+      !s)
+    return s.error();
   std::vector<Override> record;
   if (start.digest.empty()) record.push_back({"start.digest=\"" + src.value().digest + "\""});
   if (is_log && !start.at) record.push_back({"start.at=" + exact_double(src.value().at)});

@@ -76,7 +76,8 @@ std::string to_text(const RunSummary& s) {
   if (!s.setup_note.empty()) o << "setup            " << s.setup_note << "\n";
   o << "events           " << c.events() << " (pair " << c.of(EventKind::Pair) << ", wall " << c.of(EventKind::Wall)
     << ", cell " << c.of(EventKind::Cell) << ", wrap " << c.of(EventKind::Wrap) << ", action "
-    << c.of(EventKind::Action) << "); samples " << c.of(EventKind::Sample) << ", stale predictions " << c.stale
+    << c.of(EventKind::Action)
+    << (c.of(EventKind::Segment) ? ", segment " + std::to_string(c.of(EventKind::Segment)) : std::string()) << "); samples " << c.of(EventKind::Sample) << ", stale predictions " << c.stale
     << ", TC-elastic " << c.tc_elastic << "\n"
     << "collisions/disk  " << short_number(s.collisions_per_particle) << "\n"
     << "simulated time   " << short_number(s.sim_time) << "\n"
@@ -113,6 +114,7 @@ std::string to_json(const RunSummary& s) {
                          {"cell", c.of(EventKind::Cell)},
                          {"wrap", c.of(EventKind::Wrap)},
                          {"action", c.of(EventKind::Action)}};
+  if (c.of(EventKind::Segment)) j["events_by_kind"]["segment"] = c.of(EventKind::Segment);
   j["samples"] = c.of(EventKind::Sample);
   j["stale_predictions"] = c.stale;
   j["tc_elastic"] = c.tc_elastic;

@@ -17,7 +17,10 @@ namespace ede::scene_detail {
 namespace {
 
 constexpr std::string_view kRootKeys[] = {"seed", "box",  "physics",  "engine", "log",
-                                          "species", "grow", "stop", "sampling", "actions", "start"};
+                                          "species", "grow", "stop", "sampling", "actions", "start", "walls"};
+constexpr std::string_view kWallsKeys[] = {"segments", "polygons"};
+constexpr std::string_view kSegmentKeys[] = {"from", "to", "restitution"};
+constexpr std::string_view kPolygonKeys[] = {"points", "closed", "restitution"};
 constexpr std::string_view kBoxKeys[] = {"size", "boundary"};
 constexpr std::string_view kPhysicsKeys[] = {"restitution", "wall_restitution", "tc", "gravity", "pairs"};
 constexpr std::string_view kWallRestitutionKeys[] = {"left", "right", "bottom", "top"};
@@ -54,6 +57,9 @@ const Section stop{"[stop]", kStopKeys};
 const Section sampling{"[sampling]", kSamplingKeys};
 const Section action{"[[actions]]", kActionKeys};
 const Section start{"[start]", kStartKeys};
+const Section walls{"[walls]", kWallsKeys};
+const Section segment{"[[walls.segments]]", kSegmentKeys};
+const Section polygon{"[[walls.polygons]]", kPolygonKeys};
 }  // namespace sections
 
 namespace {
@@ -63,7 +69,8 @@ const Section* const kAllSections[] = {&sections::root,      &sections::box,    
                                        &sections::engine,    &sections::log,      &sections::species,
                                        &sections::radius,
                                        &sections::placement, &sections::velocity, &sections::grow, &sections::stop,
-                                       &sections::sampling,  &sections::action, &sections::start};
+                                       &sections::sampling,  &sections::action, &sections::start,
+                                       &sections::walls,     &sections::segment, &sections::polygon};
 
 bool contains(std::span<const std::string_view> list, std::string_view word) {
   return std::find(list.begin(), list.end(), word) != list.end();

@@ -110,6 +110,82 @@ PhysicsSpec read_physics(const Reader& top) {
   return out;
 }
 
+// [walls]: straight wall segments inside the box. [[walls.segments]] from = [x, y], to = [x, y],
+// restitution = 1 (the default); [[walls.polygons]] points = [[x, y], ...] (at least 2), closed = true
+// (the default: the last point joins the first), restitution: one segment per side, in order.
+void check_segment_ends(const Reader& r, std::string_view key, const SegmentSpec& s, const Scene& scene) {
+  for (const auto& p : {s.from, s.to})
+    if (p[0] < 0 || p[0] > scene.lx || p[1] < 0 || p[1] > scene.ly)
+      r.fail(key, "the point (" + number_text(p[0]) + ", " + number_text(p[1]) + ") lies outside the box [0, " +
+                      number_text(scene.lx) + "] x [0, " + number_text(scene.ly) + "]",
+             "move it inside the box (the box's own sides are walls already)");
+  if (s.from == s.to)
+    r.fail(key, "a segment of zero length (both ends at (" + number_text(s.from[0]) + ", " + number_text(s.from[1]) + "))",
+           "give two different end points, or remove the segment");
+}
+
+SegmentSpec read_segment(const toml::node& node, std::size_t i, const Reader& w, const Scene& scene) {
+  const std::string path = "walls.segments[" + std::to_string(i) + "]";
+  const toml::table* table = node.as_table();
+  if (!table) w.fail_node(&node, path, "expected a table", "write each segment as a [[walls.segments]] table");
+  const Reader r(*table, path, w.origin());
+  r.check_keys(sections::segment);
+  SegmentSpec s;
+  const auto from = r.numbers("from", 2, "[x, y]", Bounds::any());
+  if (!from) missing(r, "from", "a segment needs its two end points", "from = [0.5, 0.0]");
+  const auto to = r.numbers("to", 2, "[x, y]", Bounds::any());
+  if (!to) missing(r, "to", "a segment needs its two end points", "to = [0.5, 1.0]");
+  s.from = {(*from)[0], (*from)[1]};
+  s.to = {(*to)[0], (*to)[1]};
+  s.restitution = r.number("restitution", Bounds::closed(0, 1), kXiFix).value_or(1);
+  check_segment_ends(r, "to", s, scene);
+  return s;
+}
+
+void read_polygon(const toml::node& node, std::size_t i, const Reader& w, Scene& scene) {
+  const std::string path = "walls.polygons[" + std::to_string(i) + "]";
+  const toml::table* table = node.as_table();
+  if (!table) w.fail_node(&node, path, "expected a table", "write each polygon as a [[walls.polygons]] table");
+  const Reader r(*table, path, w.origin());
+  r.check_keys(sections::polygon);
+  const auto points = r.pairs("points", "[x, y]");
+  if (!points) missing(r, "points", "a polygon needs its corners", "points = [[0.2, 0.2], [0.8, 0.2], [0.5, 0.8]]");
+  if (points->size() < 2) r.fail("points", "a polygon needs at least two points", "give two or more [x, y] points");
+  const bool closed = r.has("closed") ? [&] {
+    const toml::node* c = r.get("closed");
+    if (!c->is_boolean()) r.fail("closed", "expected true or false", "write closed = true or closed = false");
+    return c->value<bool>().value_or(true);
+  }() : true;
+  const double xi = r.number("restitution", Bounds::closed(0, 1), kXiFix).value_or(1);
+  const std::size_t n = points->size(), sides = closed && n > 2 ? n : n - 1;
+  for (std::size_t k = 0; k < sides; ++k) {
+    SegmentSpec s;
+    s.from = (*points)[k];
+    s.to = (*points)[(k + 1) % n];
+    s.restitution = xi;
+    check_segment_ends(r, "points", s, scene);
+    scene.physics.segments.push_back(s);
+  }
+}
+
+void read_walls(const Reader& top, Scene& scene) {
+  if (!top.has("walls")) return;
+  const Reader w = top.section("walls");
+  w.check_keys(sections::walls);
+  if (const toml::array* list = w.array("segments"))
+    for (std::size_t i = 0; i < list->size(); ++i) scene.physics.segments.push_back(read_segment(*list->get(i), i, w, scene));
+  if (const toml::array* list = w.array("polygons"))
+    for (std::size_t i = 0; i < list->size(); ++i) read_polygon(*list->get(i), i, w, scene);
+  if (scene.physics.segments.empty()) return;
+  if (scene.boundary == BoundaryKind::Periodic)
+    w.fail_here("wall segments need box.boundary = \"walls\" (a segment across a periodic edge has no defined image)",
+                "use box.boundary = \"walls\", or remove [walls]");
+  if (scene.physics.has_gravity())
+    w.fail_here("wall segments with gravity are not supported yet (a parabola against a slanted segment needs a "
+                "quartic root the engine does not solve)",
+                "remove physics.gravity, or the segments");
+}
+
 void read_engine(const Reader& top, Scene& scene) {
   const Reader e = top.section("engine");
   e.check_keys(sections::engine);
@@ -477,6 +553,7 @@ bool elastic_in_effect(const Scene& scene) {
   for (const PairRestitution& p : ph.pairs) all = all && p.value == 1;
   if (scene.boundary == BoundaryKind::Walls)
     for (int w = 0; w < 4; ++w) all = all && ph.wall(w) == 1;
+  for (const SegmentSpec& s : ph.segments) all = all && s.restitution == 1;
   return all;
 }
 
@@ -516,6 +593,7 @@ Scene scene_from_tree(const toml::table& root, const Origin& origin) {
   scene.seed = static_cast<std::uint64_t>(top.integer("seed", 0).value_or(1));
   read_box(top, scene);
   scene.physics = read_physics(top);
+  read_walls(top, scene);
   read_engine(top, scene);
   scene.log = read_log(top);
   scene.start = read_start(top);

@@ -241,9 +241,13 @@ Status place_species(const Scene& scene, std::size_t k, PlacementGrid& grid, Rng
   Status st = Ok{};
   switch (s.placement.kind) {
     case PlacementKind::Random:
-      st =
-          setup_detail::place_random({s.placement.region, scene.lx, scene.ly, periodic}, d.r, grid, rng, d.x, d.y);
+    {
+      setup_detail::RandomPlacement where{s.placement.region, scene.lx, scene.ly, periodic, {}};
+      for (const SegmentSpec& g : scene.physics.segments)
+        where.segments.push_back(make_segment(g.from[0], g.from[1], g.to[0], g.to[1], g.restitution));
+      st = setup_detail::place_random(where, d.r, grid, rng, d.x, d.y);
       break;
+    }
     case PlacementKind::Lattice: {
       const double r_max = d.r.empty() ? 0.0 : *std::max_element(d.r.begin(), d.r.end());  // sites fit the largest
       st = setup_detail::place_lattice({s.placement.lattice, s.placement.region, scene.lx, scene.ly, periodic},
@@ -375,6 +379,8 @@ Result<InitialState> build_initial_state(const Scene& scene) {
       state.add(d.x[i], d.y[i], vx[i], vy[i], d.r[i], m[i], std::int32_t(k));
   }
   if (Status st = check_initial_state(state, scene.boundary, scene.source_name); !st) return st.error();
+  if (Status st = check_disks_clear_of_segments(state, scene.physics.segments, scene.source_name); !st)
+    return st.error();
   return state;
 }
 

@@ -25,4 +25,12 @@ Result<InitialState> build_initial_state(const Scene& scene);
 // periodic). Grid-accelerated: O(N). Messages start with source_name and name disks by id and species.
 Status check_initial_state(const InitialState& state, BoundaryKind boundary, const std::string& source_name);
 
+// Wall segments (check_segments.cpp): finite, of non-zero length, restitution in [0, 1], end points in the
+// box; refused in a periodic box and with gravity. And every disk at least its radius from every segment
+// (1e-12 relative tolerance, like overlaps).
+Status check_segments(const std::vector<SegmentSpec>& segments, double lx, double ly, BoundaryKind boundary,
+                      bool gravity, const std::string& source_name);
+Status check_disks_clear_of_segments(const InitialState& state, const std::vector<SegmentSpec>& segments,
+                                     const std::string& source_name);
+
 }  // namespace ede

@@ -54,6 +54,12 @@ Error jammed(const RandomPlacement& where, const std::vector<double>& radii, std
                "dense packings, or fewer/smaller disks."};
 }
 
+bool clear_of_segments(const RandomPlacement& where, double x, double y, double r) {
+  for (const Segment<double>& s : where.segments)
+    if (segment_distance(s, x, y) < r) return false;
+  return true;
+}
+
 }  // namespace
 
 std::int64_t random_attempt_budget(std::int64_t count) { return std::max<std::int64_t>(1000000, 2000 * count); }
@@ -81,7 +87,7 @@ Status place_random(const RandomPlacement& where, std::vector<double>& radii, Pl
       double cx, cy;
       const bool inside_x = draw(ax, g.x0, g.x1, r, rng, cx);
       const bool inside_y = draw(ay, g.y0, g.y1, r, rng, cy);
-      if (inside_x && inside_y && !grid.overlaps(cx, cy, r)) {
+      if (inside_x && inside_y && !grid.overlaps(cx, cy, r) && clear_of_segments(where, cx, cy, r)) {
         grid.insert(cx, cy, r);
         x[k] = cx;
         y[k] = cy;

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/segment.hpp"
 #include "ede/error.hpp"
 #include "core/rng.hpp"
 #include "ede/scene.hpp"
@@ -24,6 +25,9 @@ struct RandomPlacement {
   Region region;
   double lx = 1, ly = 1;
   bool periodic_box = false;
+  // Wall segments: a candidate touching one is rejected like one overlapping a disk (an attempt spent, no
+  // extra draws, so scenes without segments draw exactly what they did before segments existed).
+  std::vector<Segment<double>> segments;
 };
 
 // The attempt budget for `count` disks: max(10^6, 2000 * count).

@@ -124,6 +124,18 @@ function drawDisks(f) {
   }
   ctx.strokeStyle = '#666';
   ctx.strokeRect(0.5, 0.5, lx * scale - 1, ly * scale - 1);
+  if (f.info.segments) {  // the scene's wall segments
+    ctx.strokeStyle = '#ddd';
+    ctx.lineWidth = 2;
+    ctx.lineCap = 'round';
+    ctx.beginPath();
+    for (const [ax, ay, bx, by] of f.info.segments) {
+      ctx.moveTo(ax * scale, (ly - ay) * scale);
+      ctx.lineTo(bx * scale, (ly - by) * scale);
+    }
+    ctx.stroke();
+    ctx.lineWidth = 1;
+  }
 }
 
 function drawHistogram(canvasId, h, curve, means) {
