@@ -5,6 +5,7 @@
 //   effects   what each effect costs per event; specialized engines against the all-effects one.
 //   accuracy  what accuracy costs in time: ns per event against the errors each setting leaves.
 //   peers     pair collisions per second after a warm-up, log off and on: the table against other codes.
+//   setup     time to start a run (placement, setup, first predictions) at 10^4..10^6 disks.
 // The command-line language is docs/cli.md's; each subcommand's options are in its file (bench_*.cpp).
 #include <CLI/CLI.hpp>
 
@@ -18,6 +19,7 @@ static int run_main(int argc, char** argv) {
   const ede::bench::Command commands[] = {
       ede::bench::speed_command(app),   ede::bench::log_command(app),      ede::bench::stress_command(app),
       ede::bench::effects_command(app), ede::bench::accuracy_command(app), ede::bench::peers_command(app),
+      ede::bench::setup_command(app),
   };
   ede::tools::add_version_flags(app, "ede-bench");
   if (const auto stop = ede::tools::parse_command_line(app, argc, argv)) return *stop;
