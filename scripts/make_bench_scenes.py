@@ -40,6 +40,12 @@ def main():
                 events = max(4_000_000, 10 * n)
                 text = TEMPLATE.format(n=n, phi=phi, boundary=boundary, events=events)
                 (OUT / f"gas-N{n}-phi{phi}-{boundary}.toml").write_text(text)
+    # Issue 15's largest case, 10^7 disks (~1.5 GB of engine), the periodic dense gas only; in large/ so that
+    # `ede-bench speed examples/bench/*.toml` does not start a 10^8-event run.
+    n, phi, boundary = 10_000_000, "0.5", "periodic"
+    text = TEMPLATE.format(n=n, phi=phi, boundary=boundary, events=10 * n)
+    (OUT / "large").mkdir(exist_ok=True)
+    (OUT / "large" / f"gas-N{n}-phi{phi}-{boundary}.toml").write_text(text)
 
 
 if __name__ == "__main__":

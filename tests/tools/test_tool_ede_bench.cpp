@@ -26,7 +26,7 @@ TEST_CASE("ede-bench: a bad command line exits with status 2 and CLI11's message
 }
 
 TEST_CASE("ede-bench: every command and subcommand answers --help and --version", "[tool][ede-bench]") {
-  for (const std::string sub : {"", "speed", "log", "stress", "effects", "accuracy", "peers"}) {
+  for (const std::string sub : {"", "speed", "log", "stress", "effects", "accuracy", "peers", "setup"}) {
     INFO(sub);
     const ToolRun help = run_tool("ede-bench", sub + " --help", "bench-help");
     CHECK(help.status == 0);
@@ -75,6 +75,19 @@ TEST_CASE("ede-bench peers: a row per scene, log on and off after the warm-up, t
   REQUIRE(rows.size() == 2);
   CHECK(rows[1].rfind("gas-N1000-phi0.5-periodic,1000,", 0) == 0);
   CHECK(run_tool("ede-bench", "peers " + scene + " --segment 0", "bench-peers-segment").status == 2);
+}
+
+TEST_CASE("ede-bench setup: a row per N, the blocked voxels placing what the grid alone places", "[tool][ede-bench]") {
+  const std::string csv = temp_path("bench-setup.csv");
+  const ToolRun r = run_tool("ede-bench", "setup --disks 500 --disks 3000 -o " + csv, "bench-setup", 120);
+  INFO(r.out << r.err);
+  REQUIRE(r.status == 0);
+  CHECK(r.out.find("| 3000 | ") != std::string::npos);
+  CHECK(r.out.find(" | yes | ") != std::string::npos);
+  const std::vector<std::string> rows = lines(read_file(csv));
+  REQUIRE(rows.size() == 3);
+  CHECK(rows[2].rfind("3000,", 0) == 0);
+  CHECK(run_tool("ede-bench", "setup --packing-fraction 0.6", "bench-setup-phi").status == 2);
 }
 
 TEST_CASE("ede-bench stress: packing 0.8 and restitution 0.5 with TC keep every invariant (small)", "[tool][ede-bench][stress]") {

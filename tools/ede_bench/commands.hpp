@@ -24,6 +24,7 @@ Command stress_command(CLI::App& app);
 Command effects_command(CLI::App& app);
 Command accuracy_command(CLI::App& app);
 Command grow_command(CLI::App& app);
+Command setup_command(CLI::App& app);
 
 // --- what the commands share (bench_cli.cpp) ---------------------------------------------------------
 

@@ -6,6 +6,7 @@
 //   accuracy  what accuracy costs in time: ns per event against the errors each setting leaves.
 //   peers     pair collisions per second after a warm-up, log off and on: the table against other codes.
 //   grow      dense starts by Lubachevsky-Stillinger growth: seconds to phi 0.72 and to jamming.
+//   setup     time to start a run (placement, setup, first predictions) at 10^4..10^6 disks.
 // The command-line language is docs/cli.md's; each subcommand's options are in its file (bench_*.cpp).
 #include <CLI/CLI.hpp>
 
@@ -19,7 +20,7 @@ static int run_main(int argc, char** argv) {
   const ede::bench::Command commands[] = {
       ede::bench::speed_command(app),   ede::bench::log_command(app),      ede::bench::stress_command(app),
       ede::bench::effects_command(app), ede::bench::accuracy_command(app), ede::bench::peers_command(app),
-      ede::bench::grow_command(app),
+      ede::bench::grow_command(app),    ede::bench::setup_command(app),
   };
   ede::tools::add_version_flags(app, "ede-bench");
   if (const auto stop = ede::tools::parse_command_line(app, argc, argv)) return *stop;

@@ -15,8 +15,6 @@ namespace {
 
 constexpr std::uint64_t kGolden = 0x9E3779B97F4A7C15ull;
 
-std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
-
 // SplitMix64's output function: a bijection of the 64-bit words with mix(0) = 0.
 std::uint64_t mix(std::uint64_t z) {
   z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
@@ -60,22 +58,6 @@ Rng Rng::from_state(const std::array<std::uint64_t, 4>& s) {
   }
   return rng;
 }
-
-std::uint64_t Rng::next_u64() {
-  const std::uint64_t result = rotl(s_[1] * 5, 7) * 9;
-  const std::uint64_t t = s_[1] << 17;
-  s_[2] ^= s_[0];
-  s_[3] ^= s_[1];
-  s_[1] ^= s_[2];
-  s_[0] ^= s_[3];
-  s_[2] ^= t;
-  s_[3] = rotl(s_[3], 45);
-  return result;
-}
-
-double Rng::uniform01() { return uniform01_from_bits(next_u64()); }
-
-double Rng::uniform(double lo, double hi) { return lo + (hi - lo) * uniform01(); }
 
 std::uint64_t Rng::below(std::uint64_t n) {
   std::uint64_t hi, lo;

@@ -1,6 +1,8 @@
 // Simulation (ede/simulation.hpp): the public face over Simulation::Impl (simulation_impl.hpp).
 #include "ede/simulation.hpp"
 
+#include <chrono>
+
 #include "log/log_reader.hpp"
 #include "run/simulation_impl.hpp"
 
@@ -13,21 +15,36 @@ Simulation::~Simulation() {
   if (impl_) (void)close();
 }
 
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+// setup_seconds covers placement too (setup_new_run), not only the engine and the log writer.
 Result<Simulation> Simulation::create(const Scene& scene, const SimulationOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
   auto setup = setup_new_run(scene);
   if (!setup) return setup.error();
+  const double placement = seconds_since(start);
   auto impl = make_simulation_impl(std::move(setup).value(), options);
   if (!impl) return impl.error();
+  impl.value()->setup_seconds += placement;
   return Simulation(std::move(impl).value());
 }
 
 Result<Simulation> Simulation::resume(const std::string& log_path, const SimulationOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
   auto setup = setup_resumed_run(log_path);
   if (!setup) return setup.error();
+  const double reading = seconds_since(start);
   SimulationOptions o = options;
   o.log_path.clear();  // the log being resumed is the log
   auto impl = make_simulation_impl(std::move(setup).value(), o);
   if (!impl) return impl.error();
+  impl.value()->setup_seconds += reading;
   return Simulation(std::move(impl).value());
 }
 

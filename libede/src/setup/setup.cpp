@@ -269,6 +269,23 @@ Status place_species(const Scene& scene, std::size_t k, PlacementGrid& grid, Rng
   return Ok{};
 }
 
+// Random placement near jamming rejects most candidates: a bitmap of wholly blocked voxels, valid for the
+// smallest radius of the scene, rejects them without the cell scan (same decisions, see blocked_voxels.hpp).
+void enable_blocked_voxels(const Scene& scene, const std::vector<Disks>& disks, PlacementGrid& grid) {
+  double r_min = 0, r_sum = 0;
+  std::size_t count = 0, random = 0;
+  for (std::size_t k = 0; k < disks.size(); ++k) {
+    for (double r : disks[k].r) {
+      r_min = count == 0 ? r : std::min(r_min, r);
+      r_sum += r;
+      ++count;
+    }
+    if (scene.species[k].placement.kind == PlacementKind::Random) random += disks[k].r.size();
+  }
+  if (random == 0) return;
+  grid.enable_blocked_voxels(r_min, r_sum / double(count));
+}
+
 InitialState empty_state(const Scene& scene, std::size_t disks) {
   InitialState state;
   state.lx = scene.lx;
@@ -361,6 +378,7 @@ Result<InitialState> build_initial_state(const Scene& scene) {
   for (const Disks& d : disks)
     for (double r : d.r) r_max = std::max(r_max, r);
   PlacementGrid grid(scene.lx, scene.ly, scene.boundary == BoundaryKind::Periodic, 2 * r_max, total);
+  enable_blocked_voxels(scene, disks, grid);
   for (std::size_t k = 0; k < n_species; ++k) {
     if (Status st = place_species(scene, k, grid, streams[k], disks[k]); !st) return st.error();
   }

@@ -1,0 +1,106 @@
+// The setup benchmark; see setup_bench.hpp.
+#include "study/setup_bench.hpp"
+
+#include <cmath>
+#include <cstring>
+#include <sstream>
+
+#include "core/rng.hpp"
+#include "engine/engine.hpp"
+#include "setup/placement_grid.hpp"
+#include "setup/setup.hpp"
+#include "setup/setup_random_placement.hpp"
+#include "study/measurement.hpp"
+#include "study/timed_run.hpp"
+
+namespace ede::study {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::uint64_t digest(const std::vector<double>& x, const std::vector<double>& y) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    for (double v : {x[i], y[i]}) {
+      std::uint64_t bits;
+      std::memcpy(&bits, &v, sizeof bits);
+      h = (h ^ bits) * 1099511628211ull;
+    }
+  }
+  return h;
+}
+
+// place_random in the unit periodic box; CPU seconds, the positions' digest and the bitmap's bytes.
+double time_placement(std::uint64_t n, const SetupPlan& plan, bool voxels, std::uint64_t& hash, double& bytes) {
+  const double r = std::sqrt(plan.packing_fraction / (double(n) * kPi));
+  std::vector<double> radii(n, r), x, y;
+  const double cpu0 = thread_cpu_seconds();
+  setup_detail::PlacementGrid grid(1, 1, true, 2 * r, n);
+  if (voxels) grid.enable_blocked_voxels(r, r);
+  Rng rng(plan.seed);
+  const Status st = setup_detail::place_random({{0, 0, 1, 1}, 1, 1, true}, radii, grid, rng, x, y);
+  const double cpu = thread_cpu_seconds() - cpu0;
+  bytes = double(grid.blocked_voxels().bytes());
+  hash = st ? digest(x, y) : 0;
+  return st ? cpu : -1;
+}
+
+std::string scene_text(std::uint64_t n, const SetupPlan& plan) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "seed = " << plan.seed << "\n[box]\nsize = [1.0, 1.0]\nboundary = \"periodic\"\n[[species]]\nname = \"gas\"\n"
+    << "count = " << n << "\n[species.placement]\nkind = \"random\"\npacking_fraction = " << plan.packing_fraction
+    << "\n[species.velocity]\nkind = \"speed\"\nspeed = 1.0\n[stop]\nevents = 1\n";
+  return s.str();
+}
+
+int measure_in_child(std::uint64_t n, const SetupPlan& plan, std::string& out) {
+  std::ostringstream o;
+  o.precision(17);
+  std::uint64_t hash = 0, naive_hash = 0;
+  double bytes = 0, unused = 0;
+  const double placement = time_placement(n, plan, true, hash, bytes);
+  if (placement < 0) return out = "random placement failed", 1;
+  o << "placement=" << placement << " voxel_bytes=" << bytes;
+  if (plan.naive) {
+    o << " naive=" << time_placement(n, plan, false, naive_hash, unused) << " same=" << (hash == naive_hash);
+  }
+  const double cpu0 = thread_cpu_seconds();
+  auto scene = parse_scene_text(scene_text(n, plan), "setup-bench.toml");
+  if (!scene) return out = scene.error().message, 1;
+  auto initial = build_initial_state(scene.value());
+  if (!initial) return out = initial.error().message, 1;
+  const double cpu1 = thread_cpu_seconds();
+  auto engine = make_engine<double>(initial.value(), engine_options_from(scene.value(), initial.value().size()));
+  if (!engine) return out = engine.error().message, 1;
+  engine.value()->run(0);  // starts: every disk's first prediction, no event
+  const double cpu2 = thread_cpu_seconds();
+  o << " setup=" << (cpu1 - cpu0) << " engine_start=" << (cpu2 - cpu1);
+  out = o.str();
+  return 0;
+}
+
+}  // namespace
+
+std::vector<SetupRow> measure_setup(const SetupPlan& plan) {
+  std::vector<SetupRow> rows;
+  for (std::uint64_t n : plan.disks) {
+    const ChildMeasurement m = run_child_measurement([&](std::string& out) { return measure_in_child(n, plan, out); });
+    SetupRow row;
+    row.disks = double(n);
+    row.ok = m.ok;
+    row.failure = m.failure;
+    row.placement = get(m.values, "placement");
+    row.naive_placement = get(m.values, "naive");
+    row.same_positions = !plan.naive || get(m.values, "same") == 1;
+    row.voxel_bytes = get(m.values, "voxel_bytes");
+    row.setup = get(m.values, "setup");
+    row.engine_start = get(m.values, "engine_start");
+    row.peak_rss = m.peak_rss;
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+}  // namespace ede::study
