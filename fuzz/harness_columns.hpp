@@ -36,7 +36,7 @@ inline bool fuzz_columns(const std::uint8_t* data, std::size_t size) {
     state.disk[i].x = 0.5, state.disk[i].y = 0.5, state.disk[i].vx = double(i % 3) - 1, state.disk[i].r = 0.01;
     state.mass[i] = 1.0 + double(i);
   }
-  std::vector<std::uint64_t> storage((size + 7) / 8 + 1);
+  ede::MessageWords storage((size + 7) / 8 + 1, 0);  // zeroed: the tail past `size` is never a column, but keep it defined
   auto* bytes = reinterpret_cast<unsigned char*>(storage.data());
   std::memcpy(bytes, data, size);
   const unsigned char* cols[6];

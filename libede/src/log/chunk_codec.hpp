@@ -38,6 +38,7 @@
 #include "ede/error.hpp"
 #include "core/state_update.hpp"
 #include "log/event_predictions.hpp"
+#include "log/message_words.hpp"
 #include "log/scalar_bytes.hpp"
 
 namespace ede {
@@ -266,7 +267,7 @@ class ChunkDecoder {
   enum Column { kTimes = 0, kKinds, kDisks, kPartners, kRaw, kResiduals, kColumnCount };
 
   // `physics`: encoding 2's predictions (copied: small).
-  ChunkDecoder(std::vector<std::uint64_t> storage, const unsigned char* const* cols, const std::size_t* sizes,
+  ChunkDecoder(MessageWords storage, const unsigned char* const* cols, const std::size_t* sizes,
                std::uint64_t first_event, std::uint32_t count, std::size_t disks, T last_time,
                std::uint32_t encoding, const EventPhysics<T>& physics);
   Status init();  // checks the raw column and unshuffles it
@@ -290,14 +291,14 @@ class ChunkDecoder {
   bool read_scalar(T& out);
   [[gnu::always_inline]] inline bool read_residual(T predicted, T& out);
   bool read_time(T& out);
-  [[gnu::always_inline]] inline bool read_time_v2(T predicted, T& out);
+  [[gnu::always_inline]] inline bool read_time_v2(const Particles<T>& p, const DecodedEvent<T>& e, T& out);
   [[gnu::always_inline]] inline bool accept_time(u128 key, T& out);
   [[gnu::always_inline]] inline bool read_kind(DecodedEvent<T>& e);
   [[gnu::always_inline]] inline bool read_ids(DecodedEvent<T>& e);
   bool read_fields(const Particles<T>& state, DecodedEvent<T>& e);
   [[gnu::always_inline]] inline bool read_v2(const Particles<T>& state, DecodedEvent<T>& e);
 
-  std::vector<std::uint64_t> storage_;
+  MessageWords storage_;
   ByteReader times_, kinds_, disks_, partners_, residuals_;
   const unsigned char* raw_shuffled_;
   std::size_t raw_size_;

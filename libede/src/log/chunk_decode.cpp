@@ -6,7 +6,7 @@
 namespace ede {
 
 template <class T>
-ChunkDecoder<T>::ChunkDecoder(std::vector<std::uint64_t> storage, const unsigned char* const* cols,
+ChunkDecoder<T>::ChunkDecoder(MessageWords storage, const unsigned char* const* cols,
                               const std::size_t* sizes, std::uint64_t first_event, std::uint32_t count,
                               std::size_t disks, T last_time, std::uint32_t encoding,
                               const EventPhysics<T>& physics)
@@ -95,9 +95,10 @@ bool ChunkDecoder<T>::read_time(T& out) {
   return accept_time(key, out);
 }
 
-// Encoding 2: an even code is a residual against the prediction, an odd one a delta to the previous time.
+// Encoding 2: an even code is a residual against the prediction, an odd one a delta to the previous time
+// (the prediction is computed only for an even code).
 template <class T>
-bool ChunkDecoder<T>::read_time_v2(T predicted, T& out) {
+bool ChunkDecoder<T>::read_time_v2(const Particles<T>& p, const DecodedEvent<T>& e, T& out) {
   u128 v;
   if (!times_.varint(v, ScalarBytes<T>::kBits + 2)) return fail("the time column is cut short");
   u128 key;
@@ -105,6 +106,7 @@ bool ChunkDecoder<T>::read_time_v2(T predicted, T& out) {
     key = previous_key_ + (v >> 1);
     if (key < previous_key_) return fail("an event time overflows");
   } else {
+    const T predicted = predicted_event_time(physics_, p, e.kind, e.i, e.j);
     key = ordered_key(predicted) + u128(unzigzag(v >> 1));  // wraps harmlessly on corrupted input
   }
   if ((key >> ScalarBytes<T>::kBits) != 0) return fail("an event time overflows");
@@ -199,7 +201,7 @@ bool ChunkDecoder<T>::read_fields(const Particles<T>& p, DecodedEvent<T>& e) {
 template <class T>
 bool ChunkDecoder<T>::read_v2(const Particles<T>& p, DecodedEvent<T>& e) {
   if (!read_kind(e) || !read_ids(e)) return false;
-  if (!read_time_v2(predicted_event_time(physics_, p, e.kind, e.i, e.j), e.time)) return false;
+  if (!read_time_v2(p, e, e.time)) return false;
   if (e.kind == EventKind::Pair) {
     Disk<T> a = p.disk[std::size_t(e.i)], b = p.disk[std::size_t(e.j)];
     advance_disk(a, e.time, physics_.gx, physics_.gy);

@@ -10,13 +10,15 @@
 #include <cstdint>
 #include <vector>
 
+#include "log/message_words.hpp"
+
 namespace ede {
 
-inline kj::ArrayPtr<const capnp::word> as_words(const std::vector<std::uint64_t>& words) {
+inline kj::ArrayPtr<const capnp::word> as_words(const MessageWords& words) {
   return kj::ArrayPtr<const capnp::word>(reinterpret_cast<const capnp::word*>(words.data()), words.size());
 }
 
-inline capnp::ReaderOptions reader_options(const std::vector<std::uint64_t>& words) {
+inline capnp::ReaderOptions reader_options(const MessageWords& words) {
   capnp::ReaderOptions o;
   o.traversalLimitInWords = 2 * words.size() + 64;
   o.nestingLimit = 16;

@@ -112,7 +112,7 @@ Result<std::shared_ptr<LogReader>> LogReader::open(const std::string& path, cons
   return r;
 }
 
-Result<std::vector<std::uint64_t>> LogReader::load_message(std::uint64_t offset, std::uint64_t payload_size) const {
+Result<MessageWords> LogReader::load_message(std::uint64_t offset, std::uint64_t payload_size) const {
   const std::uint64_t start = offset + logfmt::kRecordHeaderSize;
   if (payload_size == 0 || payload_size > logfmt::kMaxPayloadBytes || start + payload_size > file_size_)
     return Error{at(path_, offset) + ": record payload outside the file", ErrorKind::Corrupt};
@@ -129,7 +129,7 @@ Result<std::vector<std::uint64_t>> LogReader::load_message(std::uint64_t offset,
     return Error{at(path_, offset) + ": the zstd frame does not fill its record", ErrorKind::Corrupt};
   // Streamed into a buffer that grows only as output arrives: a corrupted declared size cannot make us
   // allocate gigabytes up front; the output must then match the declared size exactly.
-  std::vector<std::uint64_t> words(std::min<std::uint64_t>(content, kInitialBuffer) / 8);
+  MessageWords words(std::min<std::uint64_t>(content, kInitialBuffer) / 8);
   ZSTD_DStream* stream = ZSTD_createDStream();
   ZSTD_initDStream(stream);
   ZSTD_inBuffer in{compressed.data(), compressed.size(), 0};

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "ede/error.hpp"
+#include "log/message_words.hpp"
 #include "ede/scene.hpp"
 
 namespace ede {
@@ -80,7 +81,7 @@ class LogReader {
   const std::vector<unsigned char>& final_time_bytes() const { return final_time_; }
 
   // The decompressed Cap'n Proto message of a record, checked: 8-byte words, the size the frame declares.
-  Result<std::vector<std::uint64_t>> load_message(std::uint64_t offset, std::uint64_t payload_size) const;
+  Result<MessageWords> load_message(std::uint64_t offset, std::uint64_t payload_size) const;
 
   // Where the file can be cut to continue the run from its last resumable keyframe.
   Result<std::size_t> last_resumable_keyframe() const;

@@ -108,7 +108,7 @@ std::vector<CommonKeyframe> common_keyframes(const LogReader& a, const LogReader
 // A chunk or keyframe message with its run id cleared, in canonical form: two runs with different run ids
 // (e.g. another scene text) can still hold identical records, and those must compare equal.
 template <class Struct>
-kj::Array<capnp::word> without_run_id(const std::vector<std::uint64_t>& words) {
+kj::Array<capnp::word> without_run_id(const MessageWords& words) {
   capnp::FlatArrayMessageReader message(as_words(words), reader_options(words));
   capnp::MallocMessageBuilder copy;
   copy.setRoot(message.getRoot<Struct>());

@@ -222,7 +222,7 @@ Status Replay<T>::open_chunk() {
   if (!words) return words.error();
   const std::string where = log_->path() + " (chunk at byte " + std::to_string(ref.offset) + ")";
   try {
-    std::vector<std::uint64_t> storage = std::move(words).value();
+    MessageWords storage = std::move(words).value();
     capnp::FlatArrayMessageReader message(as_words(storage), reader_options(storage));
     const auto chunk = message.getRoot<logschema::Chunk>();
     if (chunk.getFirstEvent() != ref.first_event || chunk.getCount() != ref.count)
