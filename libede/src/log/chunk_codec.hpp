@@ -291,11 +291,13 @@ class ChunkDecoder {
   bool read_scalar(T& out);
   [[gnu::always_inline]] inline bool read_residual(T predicted, T& out);
   bool read_time(T& out);
-  [[gnu::always_inline]] inline bool read_time_v2(const Particles<T>& p, const DecodedEvent<T>& e, T& out);
+  template <class Predict>
+  [[gnu::always_inline]] inline bool read_time_v2(const Predict& predict, T& out);
   [[gnu::always_inline]] inline bool accept_time(u128 key, T& out);
   [[gnu::always_inline]] inline bool read_kind(DecodedEvent<T>& e);
   [[gnu::always_inline]] inline bool read_ids(DecodedEvent<T>& e);
   bool read_fields(const Particles<T>& state, DecodedEvent<T>& e);
+  template <bool kGravity>
   [[gnu::always_inline]] inline bool read_v2(const Particles<T>& state, DecodedEvent<T>& e);
 
   MessageWords storage_;
@@ -311,6 +313,7 @@ class ChunkDecoder {
   u128 previous_key_ = 0;
   std::uint32_t encoding_;
   EventPhysics<T> physics_;
+  bool gravity_;  // the header's gravity is not zero: decode takes the general pair path
   std::string error_;
 };
 
@@ -337,7 +340,7 @@ inline bool finite_record(const Disk<T>& d) {
 }
 
 template <class T>
-inline bool apply_event(const DecodedEvent<T>& e, Particles<T>& p, T lx, T ly) {
+[[gnu::always_inline]] inline bool apply_event(const DecodedEvent<T>& e, Particles<T>& p, T lx, T ly) {
   switch (e.kind) {
     case EventKind::Pair: {
       Disk<T>& a = p.disk[std::size_t(e.i)];

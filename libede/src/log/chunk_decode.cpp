@@ -23,7 +23,8 @@ ChunkDecoder<T>::ChunkDecoder(MessageWords storage, const unsigned char* const* 
       disks_count_(disks),
       last_time_(last_time),
       encoding_(encoding),
-      physics_(physics) {}
+      physics_(physics),
+      gravity_(physics.gx != T(0) || physics.gy != T(0)) {}
 
 template <class T>
 Status ChunkDecoder<T>::init() {
@@ -98,7 +99,8 @@ bool ChunkDecoder<T>::read_time(T& out) {
 // Encoding 2: an even code is a residual against the prediction, an odd one a delta to the previous time
 // (the prediction is computed only for an even code).
 template <class T>
-bool ChunkDecoder<T>::read_time_v2(const Particles<T>& p, const DecodedEvent<T>& e, T& out) {
+template <class Predict>
+bool ChunkDecoder<T>::read_time_v2(const Predict& predict, T& out) {
   u128 v;
   if (!times_.varint(v, ScalarBytes<T>::kBits + 2)) return fail("the time column is cut short");
   u128 key;
@@ -106,7 +108,7 @@ bool ChunkDecoder<T>::read_time_v2(const Particles<T>& p, const DecodedEvent<T>&
     key = previous_key_ + (v >> 1);
     if (key < previous_key_) return fail("an event time overflows");
   } else {
-    const T predicted = predicted_event_time(physics_, p, e.kind, e.i, e.j);
+    const T predicted = predict();
     key = ordered_key(predicted) + u128(unzigzag(v >> 1));  // wraps harmlessly on corrupted input
   }
   if ((key >> ScalarBytes<T>::kBits) != 0) return fail("an event time overflows");
@@ -198,14 +200,18 @@ bool ChunkDecoder<T>::read_fields(const Particles<T>& p, DecodedEvent<T>& e) {
 }
 
 // Encoding 2: kind and ids, then the time against its prediction, then the velocities against theirs.
+// Pairs (nearly every event) take a path compiled for the header's gravity (kGravity = false: the gravity
+// branches of the predictor and of advance_disk fold away; the same bits, since with g = 0 they are drift).
 template <class T>
+template <bool kGravity>
 bool ChunkDecoder<T>::read_v2(const Particles<T>& p, DecodedEvent<T>& e) {
   if (!read_kind(e) || !read_ids(e)) return false;
-  if (!read_time_v2(p, e, e.time)) return false;
   if (e.kind == EventKind::Pair) {
+    if (!read_time_v2([&] { return predict_pair_time<T, kGravity>(physics_, p, e.i, e.j); }, e.time)) return false;
+    const T gx = kGravity ? physics_.gx : T(0), gy = kGravity ? physics_.gy : T(0);
     Disk<T> a = p.disk[std::size_t(e.i)], b = p.disk[std::size_t(e.j)];
-    advance_disk(a, e.time, physics_.gx, physics_.gy);
-    advance_disk(b, e.time, physics_.gx, physics_.gy);
+    advance_disk(a, e.time, gx, gy);
+    advance_disk(b, e.time, gx, gy);
     e.advanced = true;
     e.xi = a.x, e.yi = a.y, e.xj = b.x, e.yj = b.y;
     T v[4];
@@ -213,6 +219,7 @@ bool ChunkDecoder<T>::read_v2(const Particles<T>& p, DecodedEvent<T>& e) {
     return read_residual(v[0], e.vix) && read_residual(v[1], e.viy) && read_residual(v[2], e.vjx) &&
            read_residual(v[3], e.vjy);
   }
+  if (!read_time_v2([&] { return predicted_event_time(physics_, p, e.kind, e.i, e.j); }, e.time)) return false;
   if (e.kind == EventKind::Wall) {
     T v[2];
     predict_wall_velocity(physics_, p, e.i, e.j, e.time, e.tc_elastic, v);
@@ -234,7 +241,9 @@ bool ChunkDecoder<T>::decode(const Particles<T>& state, DecodedEvent<T>& e) {
   e.advanced = false;
   e.i = e.j = -1;
   e.vix = e.viy = e.vjx = e.vjy = T(0);  // a wall, wrap or action event leaves some of them unset
-  const bool ok = encoding_ >= 2 ? read_v2(state, e) : read_time(e.time) && read_fields(state, e);
+  const bool ok = encoding_ < 2 ? read_time(e.time) && read_fields(state, e)
+                  : gravity_  ? read_v2<true>(state, e)
+                              : read_v2<false>(state, e);
   if (!ok) return false;
   ++decoded_;
   return true;

@@ -126,24 +126,28 @@ inline T predict_segment_time(const EventPhysics<T>& ph, const Disk<T>& d, std::
 
 // Time of pair (i, j): predicted by the disk whose record is later (i on a tie), at now = that record's
 // time, against the partner's image nearest at now (Engine::pair_time; predict_pair without gravity).
-template <class T>
-inline T predict_pair_time(const EventPhysics<T>& ph, const Particles<T>& p, std::int32_t i, std::int32_t j) {
+// kGravity = false is for callers that know the header has no gravity (gx = gy = 0): the same bits, with
+// the gravity branches compiled out (replay's decoder; position_along with g = 0 is drift exactly).
+template <class T, bool kGravity = true>
+[[gnu::always_inline]] inline T predict_pair_time(const EventPhysics<T>& ph, const Particles<T>& p, std::int32_t i,
+                                                  std::int32_t j) {
   const Disk<T>* di = &p.disk[std::size_t(i)];
   const Disk<T>* dj = &p.disk[std::size_t(j)];
   if (dj->t > di->t) std::swap(di, dj);
   const T now = di->t;
-  const T pix = position_along(di->x, di->vx, ph.gx, di->t, now), piy = position_along(di->y, di->vy, ph.gy, di->t, now);
-  const T pjx = position_along(dj->x, dj->vx, ph.gx, dj->t, now), pjy = position_along(dj->y, dj->vy, ph.gy, dj->t, now);
+  const T gx = kGravity ? ph.gx : T(0), gy = kGravity ? ph.gy : T(0);
+  const T pix = position_along(di->x, di->vx, gx, di->t, now), piy = position_along(di->y, di->vy, gy, di->t, now);
+  const T pjx = position_along(dj->x, dj->vx, gx, dj->t, now), pjy = position_along(dj->y, dj->vy, gy, dj->t, now);
   T sx = 0, sy = 0;
   if (ph.periodic) {
     const T ex = pjx - pix, ey = pjy - piy;
     sx = ex > ph.half_lx ? -ph.lx : ex < -ph.half_lx ? ph.lx : T(0);
     sy = ey > ph.half_ly ? -ph.ly : ey < -ph.half_ly ? ph.ly : T(0);
   }
-  if (ph.gx == T(0) && ph.gy == T(0))
+  if (gx == T(0) && gy == T(0))
     return predict_pair<StableContact>(*di, Position2<T>{pix, piy}, *dj, sx, sy, now, ph.b_noise2);
-  const T vix = velocity_along(di->vx, ph.gx, di->t, now), viy = velocity_along(di->vy, ph.gy, di->t, now);
-  const T vjx = velocity_along(dj->vx, ph.gx, dj->t, now), vjy = velocity_along(dj->vy, ph.gy, dj->t, now);
+  const T vix = velocity_along(di->vx, gx, di->t, now), viy = velocity_along(di->vy, gy, di->t, now);
+  const T vjx = velocity_along(dj->vx, gx, dj->t, now), vjy = velocity_along(dj->vy, gy, dj->t, now);
   return now + StableContact::time((pjx + sx) - pix, (pjy + sy) - piy, vjx - vix, vjy - viy, di->r + dj->r,
                                    ph.b_noise2);
 }
