@@ -169,6 +169,15 @@ int seek_child_typed(const std::shared_ptr<const LogReader>& log, double open_se
     if (Status s = replay.value()->seek_time(t); !s) return out = s.error().message, 1;
     o << " create_" << k << "=" << create << " seek_" << k << "=" << seconds_since(t1);
   }
+  {
+    // The state only: an empty function makes for_each_event apply events as a seek does.
+    auto state_replay = Replay<T>::create(log);
+    if (!state_replay) return out = state_replay.error().message, 1;
+    const auto t0 = std::chrono::steady_clock::now();
+    const Status s = state_replay.value()->for_each_event(0, log->total_events(), {});
+    if (!s) return out = s.error().message, 1;
+    o << " state_replay_wall=" << seconds_since(t0) << " state_replay_events=" << state_replay.value()->events_applied();
+  }
   auto replay = Replay<T>::create(log);
   if (!replay) return out = replay.error().message, 1;
   const auto t0 = std::chrono::steady_clock::now();
@@ -201,6 +210,8 @@ SeekResult measure_seeks(const std::string& path) {
   m.open = get(kv, "open");
   m.replay_wall = get(kv, "replay_wall");
   m.replay_events = get(kv, "replay_events");
+  m.state_replay_wall = get(kv, "state_replay_wall");
+  m.state_replay_events = get(kv, "state_replay_events");
   for (int k = 0; k < kSeekTimes; ++k) {
     m.create.push_back(get(kv, "create_" + std::to_string(k)));
     m.seek.push_back(get(kv, "seek_" + std::to_string(k)));
@@ -210,20 +221,24 @@ SeekResult measure_seeks(const std::string& path) {
 
 // Per seek time the median over repeats; then min, median, max over the times.
 SeekStats seek_stats(const SeekRow& row) {
-  std::vector<double> per_time, creates, eps;
+  std::vector<double> per_time, creates, eps, state_eps;
   for (int k = 0; k < kSeekTimes; ++k) {
     std::vector<double> v, c;
     for (const SeekResult& r : row.repeats) v.push_back(r.seek[std::size_t(k)]), c.push_back(r.create[std::size_t(k)]);
     per_time.push_back(median(v));
     creates.push_back(median(c));
   }
-  for (const SeekResult& r : row.repeats) eps.push_back(r.replay_wall > 0 ? r.replay_events / r.replay_wall : 0);
+  for (const SeekResult& r : row.repeats) {
+    eps.push_back(r.replay_wall > 0 ? r.replay_events / r.replay_wall : 0);
+    state_eps.push_back(r.state_replay_wall > 0 ? r.state_replay_events / r.state_replay_wall : 0);
+  }
   SeekStats st;
   st.min = *std::min_element(per_time.begin(), per_time.end());
   st.max = *std::max_element(per_time.begin(), per_time.end());
   st.median = median(per_time);
   st.create = median(creates);
   st.replay_events_per_second = median(eps);
+  st.state_replay_events_per_second = median(state_eps);
   return st;
 }
 

@@ -73,11 +73,13 @@ struct SeekResult {
   bool ok = false;
   std::string failure;
   double open = 0, replay_wall = 0, replay_events = 0;
+  double state_replay_wall = 0, state_replay_events = 0;  // the same events applied without per-event records
   std::vector<double> create, seek;  // per seek time
 };
 
-// Replay::seek_time at t_end (k + 0.37) / kSeekTimes, each on a fresh Replay, and one replay of every
-// event from the start; in a child process.
+// Replay::seek_time at t_end (k + 0.37) / kSeekTimes, each on a fresh Replay, and two replays of every
+// event from the start (the state only, as a seek applies events; and with a record per event, as
+// for_each_event gives tools); in a child process.
 SeekResult measure_seeks(const std::string& path);
 
 // A log built once (timed) and sought in `repeat` times.
@@ -97,7 +99,8 @@ SeekRow seek_row(const RunConfig& build, const std::string& label, std::uint64_t
 struct SeekStats {
   double min = 0, median = 0, max = 0;  // seconds, over the seek times (each the median over repeats)
   double create = 0;                    // a fresh Replay, median
-  double replay_events_per_second = 0;  // median over repeats
+  double replay_events_per_second = 0;        // with per-event records (for_each_event), median over repeats
+  double state_replay_events_per_second = 0;  // the state only (what a seek does), median over repeats
 };
 SeekStats seek_stats(const SeekRow& row);
 
