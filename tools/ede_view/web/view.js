@@ -231,10 +231,10 @@ function pressure(f) {
   if (!i.periodic) {
     const impulse = b.wall.reduce((s, v) => s + v, 0) - a.wall.reduce((s, v) => s + v, 0);
     value = impulse / (2 * (i.lx + i.ly) * dt);
-    formula = 'walls: Σ|Δp_n| / (perimeter · Δt)';
+    formula = 'walls';
   } else {
     value = (i.disks * i.kT + (b.virial - a.virial) / (2 * dt)) / area;
-    formula = 'virial: (N kT + W / 2Δt) / A';
+    formula = 'virial';
   }
   return { value, z: value * area / (i.disks * i.kT), dt, formula };
 }
@@ -248,8 +248,8 @@ function monitors(f) {
   rows.push(['collisions per disk', (view.mode === 'log' ? '≈ ' : '') + i.collisions_per_disk.toFixed(2)],
     ['kT (initial)', i.kT.toPrecision(4) + ' (' + i.kT0.toPrecision(4) + ')'],
     ['% slow / medium / fast', i.percent.map((p) => p.toFixed(1)).join(' / ')],
-    ...(view.pressure ? [['pressure (' + view.pressure.formula + ', over Δt = ' + view.pressure.dt.toPrecision(3) + ')',
-      view.pressure.value.toPrecision(4) + ' (Z = PA/NkT = ' + view.pressure.z.toPrecision(4) + ')']] : []),
+    ...(view.pressure ? [['pressure, ' + view.pressure.formula + ' (Δt ' + view.pressure.dt.toPrecision(3) + ')',
+      view.pressure.value.toPrecision(4) + ' (Z ' + view.pressure.z.toPrecision(4) + ')']] : []),
     ['disks drawn', f.n.toLocaleString('en') + (i.stride > 1 ? ' (every ' + i.stride + 'th of ' + i.disks.toLocaleString('en') + ')' : '')]);
   if (i.status) rows.push(['run', i.status]);
   if (i.log) rows.push(['log', i.log]);
