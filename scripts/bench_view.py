@@ -1,14 +1,16 @@
 #!/usr/bin/python3
 """ede-view's benchmark: frames per second it serves and the page draws, and seek times in a large log.
 
-  scripts/bench_view.py [--build build] [--seconds 5] [--events 10000000]
+  scripts/bench_view.py [--build build] [--seconds 5] [--events 10000000] [--sizes 10000,100000,1000000]
 
-1. Live runs of examples/bench/gas-N{10^4,10^5}-phi0.3-walls.toml at full engine speed: frames fetched
-   back to back over HTTP for --seconds (what one tab polling as fast as it can gets), their size, and
-   the engine's events/s while watched against while nobody watches (the worker copies a state only when
-   a page asked for one, so watching should cost the engine little).
-2. The same scenes in headless chromium (if installed): frames the page draws per second (fetch, parse,
-   draw, histograms), at full engine speed.
+1. Live runs of examples/bench/gas-N{10^4,10^5,10^6}-phi0.3-walls.toml at full engine speed: frames
+   fetched back to back over HTTP for --seconds (what one tab polling as fast as it can gets), their size,
+   and the engine's events/s while watched against while nobody watches (the worker copies a state only
+   when a page asked for one, so watching should cost the engine little).
+2. The same scenes in headless chromium (if installed), once per drawing path (?draw=2d: the 2D canvas's
+   pixel path; ?draw=webgl: gl_draw.js; the page's default picks one of them, said in the table): frames
+   the page draws per second (fetch, parse, draw, histograms), the median of the rates of each second of
+   the window, and the median time of the page's own drawing code per frame (edeView.drawMs).
 3. Seeks: a log of --events events at N = 10^4, frames at 50 random times (median and worst, HTTP
    included, each a fresh keyframe seek + replay).
 Prints a markdown table (docs/view.md holds one, measured under load on the project's shared machine).
@@ -47,7 +49,41 @@ def live(server, scene, seconds):
     return n / elapsed, size / n, ev_unwatched, st["events_per_second"]
 
 
-def browser_fps(server, scene, seconds):
+def browser_fps(server, scene, seconds, draw):
+    """(median frames/s over 1-s windows, median drawMs, drawer used, renderer) or None without chromium."""
+    try:
+        browser = viewlib.Browser()
+    except SystemExit:
+        return None
+    try:
+        browser.goto(server.url + "/?draw=" + draw)
+        browser.eval(f"document.getElementById('scene').value = '0:{scene}'")
+        browser.eval("document.getElementById('scene').dispatchEvent(new Event('change'))")
+        time.sleep(0.5)
+        browser.eval("document.getElementById('setup').click()")
+        browser.wait("edeView.last && edeView.last.info.status === 'paused'", 120)
+        browser.eval("document.getElementById('fastest').click()")
+        browser.eval("document.getElementById('go').click()")
+        time.sleep(1.0)
+        rates, draw_ms = [], []
+        f0, t0 = browser.eval("edeView.frames"), time.perf_counter()
+        end = t0 + seconds
+        while time.perf_counter() < end:
+            time.sleep(1.0)
+            f1, t1 = browser.eval("edeView.frames"), time.perf_counter()
+            rates.append((f1 - f0) / (t1 - t0))
+            draw_ms.append(browser.eval("edeView.drawMs"))
+            f0, t0 = f1, t1
+        drawer = browser.eval("edeView.drawer")
+        renderer = browser.eval("edeView.renderer")
+        browser.eval("document.getElementById('go').click()")
+        return statistics.median(rates), statistics.median(draw_ms), drawer, renderer
+    finally:
+        browser.close()
+
+
+def default_drawer(server, scene):
+    """The path the page picks by itself for this scene (its first frame after SETUP)."""
     try:
         browser = viewlib.Browser()
     except SystemExit:
@@ -58,15 +94,8 @@ def browser_fps(server, scene, seconds):
         browser.eval("document.getElementById('scene').dispatchEvent(new Event('change'))")
         time.sleep(0.5)
         browser.eval("document.getElementById('setup').click()")
-        browser.wait("edeView.last && edeView.last.info.status === 'paused'", 60)
-        browser.eval("document.getElementById('fastest').click()")
-        browser.eval("document.getElementById('go').click()")
-        time.sleep(1.0)
-        f0, t0 = browser.eval("edeView.frames"), time.perf_counter()
-        time.sleep(seconds)
-        f1, t1 = browser.eval("edeView.frames"), time.perf_counter()
-        browser.eval("document.getElementById('go').click()")
-        return (f1 - f0) / (t1 - t0)
+        browser.wait("edeView.last && edeView.last.info.status === 'paused'", 120)
+        return browser.eval("edeView.drawer")
     finally:
         browser.close()
 
@@ -88,17 +117,18 @@ def main():
     ap.add_argument("--build", default=os.path.join(HERE, "../build"))
     ap.add_argument("--seconds", type=float, default=5)
     ap.add_argument("--events", type=int, default=10_000_000)
+    ap.add_argument("--sizes", default="10000,100000,1000000")
     a = ap.parse_args()
     os.environ["EDE_TOOLS_DIR"] = os.path.join(os.path.abspath(a.build), "tools")
     os.environ.setdefault("EDE_SOURCE_DIR", os.path.abspath(os.path.join(HERE, "..")))
     server = viewlib.Server()
     rows = []
     try:
-        for n in (10_000, 100_000):
+        for n in (int(x) for x in a.sizes.split(",")):
             scene = f"bench/gas-N{n}-phi0.3-walls.toml"
             fps, size, ev0, ev1 = live(server, scene, a.seconds)
-            page = browser_fps(server, scene, a.seconds)
-            rows.append((n, fps, size / 1e6, ev0 / 1e6, ev1 / 1e6, page))
+            pages = {draw: browser_fps(server, scene, a.seconds, draw) for draw in ("2d", "webgl")}
+            rows.append((n, fps, size / 1e6, ev0 / 1e6, ev1 / 1e6, pages, default_drawer(server, scene)))
         log = os.path.join(server.logs, "large.ede")
         start = time.perf_counter()
         viewlib.make_log(log, "examples/bench/gas-N10000-phi0.3-walls.toml", [f"stop.events={a.events}"])
@@ -107,10 +137,20 @@ def main():
         med, worst = seeks(server, "0:large.ede", info["end"])
     finally:
         server.close()
-    print("| disks | frames/s served (HTTP, back to back) | MB/frame | engine M events/s unwatched | watched | frames/s drawn by the page (headless chromium) |")
-    print("|---:|---:|---:|---:|---:|---:|")
-    for n, fps, mb, ev0, ev1, page in rows:
-        print(f"| {n} | {fps:.0f} | {mb:.2f} | {ev0:.2f} | {ev1:.2f} | {'-' if page is None else f'{page:.0f}'} |")
+    print("| disks | frames/s served (HTTP, back to back) | MB/frame | engine M events/s unwatched | watched |"
+          " page frames/s, 2D path (draw ms) | page frames/s, WebGL (draw ms) | the page's default |")
+    print("|---:|---:|---:|---:|---:|---:|---:|---|")
+    renderer = "-"
+    for n, fps, mb, ev0, ev1, pages, default in rows:
+        cells = []
+        for draw in ("2d", "webgl"):
+            p = pages[draw]
+            cells.append("-" if p is None else f"{p[0]:.0f} ({p[1]:.1f}; {p[2]})")
+            if p is not None and draw == "webgl":
+                renderer = p[3]
+        print(f"| {n} | {fps:.0f} | {mb:.2f} | {ev0:.2f} | {ev1:.2f} | {cells[0]} | {cells[1]} | {default} |")
+    print()
+    print(f"WebGL renderer: {renderer}")
     print()
     print(f"Seeks in a log of {info['events']} events, N = {info['disks']} (written in {made:.0f} s, "
           f"{info['keyframes']} keyframes): frame at a random time, HTTP included: median {med * 1e3:.0f} ms, "

@@ -74,6 +74,7 @@ void add_live_routes(httplib::Server& server, const std::vector<Root>& roots, Li
   server.Post("/api/run/go", control(&LiveRuns::go));
   server.Post("/api/run/pause", control(&LiveRuns::pause));
   server.Post("/api/run/reverse", control(&LiveRuns::reverse));
+  server.Post("/api/run/finish", control(&LiveRuns::finish));
   server.Post("/api/run/pace", [&runs](const httplib::Request& req, httplib::Response& res) {
     const auto pace = number_param(req, res, "pace");
     if (!pace) return;

@@ -26,15 +26,24 @@ struct LiveRuns::Run {
 
   std::mutex m;
   std::condition_variable cv;
-  bool running = false, quit = false, reverse_requested = false, ended = false, catching_up = false;
+  bool running = false, quit = false, reverse_requested = false, finish_requested = false, ended = false,
+       catching_up = false;
   double pace = 0.25;
   std::shared_ptr<const State> state;
   Reference reference;
   std::uint64_t collisions = 0;
+  ImpulseSums impulses;  // of `state`, for the pressure monitor
   double events_per_second = 0;
   std::string status = "paused", message;
   std::atomic<bool> wanted{false};
   std::thread worker;
+
+  // The last frame packed, for the state and monitors it was packed from: tabs (or one tab polling faster
+  // than the worker publishes) asking again get these bytes instead of the statistics over every disk again.
+  std::mutex frame_m;
+  std::shared_ptr<const State> framed_state;
+  std::string framed_extras, framed;
+  std::size_t framed_max = 0;
 };
 
 namespace {
@@ -42,6 +51,7 @@ namespace {
 SimulationOptions log_options(const std::string& path) {
   SimulationOptions o;
   o.log_path = path;
+  o.impulses = true;  // the page's pressure monitor
   return o;
 }
 
@@ -85,8 +95,10 @@ namespace {
 void publish(LiveRuns::Run& r, Simulation& sim, double events_per_second) {
   auto state = std::make_shared<const State>(sim.state());
   const EventCounts counts = sim.counts();
+  const ImpulseSums impulses = sim.impulses();
   std::lock_guard lock(r.m);
   r.state = std::move(state);
+  r.impulses = impulses;
   r.collisions = counts.of(EventKind::Pair);
   r.events_per_second = events_per_second;
 }
@@ -138,15 +150,26 @@ void work(LiveRuns::Run& r) {
   double rate = 0;
   for (;;) {
     double pace = 0;
-    bool reverse = false;
+    bool reverse = false, finish = false;
     {
       std::unique_lock lock(r.m);
       if (!r.running) anchored = false;
-      r.cv.wait(lock, [&] { return r.quit || r.running || r.reverse_requested; });
+      r.cv.wait(lock, [&] { return r.quit || r.running || r.reverse_requested || r.finish_requested; });
       if (r.quit) return;
       pace = r.pace;
       reverse = r.reverse_requested;
-      r.reverse_requested = false;
+      finish = r.finish_requested;
+      r.reverse_requested = r.finish_requested = false;
+    }
+    if (finish && r.sim) {  // FINISH: the log ends here, complete (Simulation::finish)
+      const Status finished = r.sim->finish();
+      publish(r, *r.sim, rate);
+      std::lock_guard lock(r.m);
+      r.running = false;
+      r.ended = true;
+      r.status = "ended: finished here at t = " + text_of(double(r.sim->time()));
+      r.message = finished ? "" : finished.error().message;
+      continue;
     }
     if (reverse) {
       do_reverse(r);
@@ -227,7 +250,11 @@ void LiveRuns::stop_current() {
   if (run->worker.joinable()) run->worker.join();
   if (!run->sim) return;
   const bool never_ran = run->sim->counts().events() == 0 && run->reversals.empty();
-  (void)run->sim->close();  // a live run's log is kept as far as it went
+  // A live run's log ends where the run was: complete, verifiable (Simulation::finish).
+  if (never_ran)
+    (void)run->sim->close();
+  else
+    (void)run->sim->finish();
   std::error_code ec;
   if (never_ran) fs::remove(run->log_path, ec);  // SETUP without GO: nothing worth keeping
 }
@@ -293,6 +320,20 @@ Status LiveRuns::pause() {
   return Ok{};
 }
 
+Status LiveRuns::finish() {
+  std::lock_guard lock(mutex_);
+  if (!run_) return Error{"no run: press SETUP first"};
+  {
+    std::lock_guard run_lock(run_->m);
+    if (run_->ended) return Error{"the run has ended already (" + run_->status + ")"};
+    run_->running = false;
+    run_->finish_requested = true;
+    run_->status = "finishing";
+  }
+  run_->cv.notify_all();
+  return Ok{};
+}
+
 Status LiveRuns::reverse() {
   std::lock_guard lock(mutex_);
   if (!run_) return Error{"no run: press SETUP first"};
@@ -325,14 +366,26 @@ std::optional<std::string> LiveRuns::frame(std::size_t max_disks) {
     std::lock_guard lock(run->m);
     state = run->state;
     extras.collisions = double(run->collisions);
-    extras.json_fields = "\"events_per_second\":" + nlohmann::json(run->events_per_second).dump() +
+    const ImpulseSums& p = run->impulses;
+    extras.json_fields = "\"impulses\":" +
+                         nlohmann::json{{"time", p.time}, {"wall", p.wall}, {"virial", p.virial},
+                                        {"pair_collisions", p.pair_collisions}, {"wall_collisions", p.wall_collisions}}
+                             .dump() +
+                         ",\"events_per_second\":" + nlohmann::json(run->events_per_second).dump() +
                          ",\"status\":" + nlohmann::json(run->status).dump() +
                          ",\"log\":" + nlohmann::json(fs::path(run->log_path).filename().string()).dump() +
                          segments_field(run->scene);
   }
   run->wanted = true;
   if (!state) return std::nullopt;
-  return pack_frame(*state, run->reference, extras, max_disks);
+  std::lock_guard lock(run->frame_m);
+  if (state != run->framed_state || max_disks != run->framed_max || extras.json_fields != run->framed_extras) {
+    run->framed = pack_frame(*state, run->reference, extras, max_disks);
+    run->framed_state = state;
+    run->framed_max = max_disks;
+    run->framed_extras = extras.json_fields;
+  }
+  return run->framed;
 }
 
 std::string LiveRuns::status_json() {

@@ -5,7 +5,9 @@
 // copy of the state only when a page has asked for one since the last copy (or every 0.25 s for the
 // monitors), so a page polling at its display rate sees states sampled at display times and the engine
 // never waits for the browser; with nobody watching it copies nothing. Every run writes its event log
-// (out-dir/live-N-SCENE.ede), so what was seen can be analysed afterwards with the other tools.
+// (out-dir/live-N-SCENE.ede), so what was seen can be analysed afterwards with the other tools; FINISH, a
+// new SETUP or the server's end close it with Simulation::finish, complete at the time the run was at.
+// Frames carry the run's impulse sums (Simulation::impulses) for the page's pressure monitor.
 // "Reverse time" (GasLab's button) is a scheduled reverse_velocities action at the current time: the run
 // is made again from its scene with that action added and replayed to it at full speed, so the one log
 // holds the whole story, reversal included, and `ede-replay verify` still holds. Rejected: a new run
@@ -46,6 +48,7 @@ class LiveRuns {
   Status go();
   Status pause();
   Status reverse();
+  Status finish();  // ends the run here: its log complete at the current time (Simulation::finish)
   void set_pace(double sim_time_per_second);  // 0: as fast as the engine goes
   // The latest published state as a frame (frame.hpp); nothing before the first SETUP.
   std::optional<std::string> frame(std::size_t max_disks);

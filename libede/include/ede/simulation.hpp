@@ -16,6 +16,7 @@
 // handler.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -74,6 +75,23 @@ struct SimulationOptions {
   std::string log_path;
   // Called every 2^18 events or so (a few times a second) from run() and advance_to().
   std::function<void(const Progress&)> progress;
+  // Keep running sums of the impulses the disks give the walls and each other (Simulation::impulses), for
+  // a live pressure monitor. Off by default: it costs one more call per event.
+  bool impulses = false;
+};
+
+// Running sums over every event this process ran (SimulationOptions::impulses), exactly as
+// ede/pressure.hpp sums them over a window of a log (the same formulas, in long double): the pressures of
+// a window (t0, t1] come from the differences of two of these, taken at t0 and t1:
+//   P_wall(w) = d wall[w] / (wall length * (t1 - t0))   (wall length Ly left and right, Lx bottom and top)
+//   P_wall    = d (sum of wall[]) / (perimeter * (t1 - t0))
+//   P_virial  = (K + d virial / (2 (t1 - t0))) / A_v     (K, A_v as in ede/pressure.hpp)
+// 2D pressure is a force per unit length: the scene's mass / time^2.
+struct ImpulseSums {
+  double time = 0;                  // the run's time when taken
+  std::array<double, 4> wall{};     // sum of |dp_n| per wall (WallId order: left, right, bottom, top)
+  double virial = 0;                // W = sum over pair collisions of r_ij . dp_i (minimum image if periodic)
+  std::uint64_t pair_collisions = 0, wall_collisions = 0;
 };
 
 // What the log of an interrupted or finished run holds, read back from the file.
@@ -120,6 +138,15 @@ class Simulation {
   std::string message() const;          // why the run stalled or came to rest (what to do), else ""
   // The current state as exact CSV, in the run's own precision (float128 runs: 36 digits).
   Status write_state_csv(const std::string& path) const;
+
+  // Ends the run here, as if a stop condition held now: processes the events still due at exactly the
+  // current time, then closes the log the way a finished run's is closed (every event, the index, the
+  // final time; status "running", i.e. ended by its program), so every tool reads the log as complete,
+  // `ede-replay verify` re-runs it to this time and `ede-replay --at end` is this state. Unlike close()
+  // on an unfinished run, the log cannot be resumed afterwards. Then as close(). Idempotent.
+  Status finish();
+  // The impulse sums up to now; all zero unless SimulationOptions::impulses was set.
+  ImpulseSums impulses() const;
 
   // Closes the log: a finished run's log gets its index; an unfinished one keeps every complete record
   // (ede-sim --resume continues it). Returns the first I/O error of the whole run, if any. Idempotent.

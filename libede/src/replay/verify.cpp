@@ -271,8 +271,21 @@ Result<VerifyReport> verify_in(const std::shared_ptr<LogReader>& log, const Reru
 
   const double total = double(std::max<std::uint64_t>(log->total_events(), 1));
   RunStatus status;
+  // A complete log whose status is "running" was ended by its program (Simulation::finish) at its final
+  // time, with every event up to that time: the re-run stops there too, as advance_to does.
+  const bool finished_early = log->complete() && log->final_status() == to_string(RunStatus::Running);
+  const T stop_at = finished_early ? replay.final_time() : T(0);
+  bool paused = false;  // finished_early: the re-run has processed every event up to stop_at
+  const auto slice = [&] {
+    if (!finished_early) return engine.run(1u << 16);
+    const std::uint64_t before = engine.counts().events() + engine.counts().of(EventKind::Sample);
+    const RunStatus s = engine.run_until(stop_at, 1u << 16);
+    paused = s == RunStatus::Running &&
+             engine.counts().events() + engine.counts().of(EventKind::Sample) - before < (1u << 16);
+    return s;
+  };
   // Slices of 2^16 events: a difference stops the run within a few milliseconds of being found.
-  while ((status = engine.run(1u << 16)) == RunStatus::Running && !cmp.stopped())
+  while ((status = slice()) == RunStatus::Running && !paused && !cmp.stopped())
     if (opt.progress) opt.progress(double(cmp.compared()) / total, cmp.compared());
 
   VerifyReport r;

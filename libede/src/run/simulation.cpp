@@ -73,6 +73,16 @@ RunSummary Simulation::summary() const { return impl_->summary(); }
 std::string Simulation::message() const { return impl_->message(); }
 Status Simulation::write_state_csv(const std::string& path) const { return impl_->write_state_csv(path); }
 
+Status Simulation::finish() {
+  if (!impl_->closed) {
+    impl_->interrupt_requested.store(false, std::memory_order_relaxed);  // the events due now are processed
+    impl_->finish_here();
+  }
+  return close();
+}
+
+ImpulseSums Simulation::impulses() const { return impl_->impulses(); }
+
 Status Simulation::close() {
   if (!impl_->close_result) {
     impl_->closed = true;

@@ -31,6 +31,8 @@ struct Simulation::Impl {
   virtual std::string message() const = 0;
   virtual Status write_state_csv(const std::string& path) const = 0;
   virtual Status close_log() = 0;
+  virtual void finish_here() = 0;  // Simulation::finish before close_log
+  virtual ImpulseSums impulses() const = 0;
 
   Scene scene;
   SimulationOptions options;

@@ -8,10 +8,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 
 #include "core/state_csv.hpp"
 #include "core/state_of.hpp"
 #include "run/finite_guard.hpp"
+#include "run/impulse_meter.hpp"
 #include "run/progress_fraction.hpp"
 #include "run/run_summary.hpp"
 #include "run/simulation_impl.hpp"
@@ -133,6 +135,24 @@ class SimulationOf final : public Simulation::Impl {
     return Ok{};
   }
 
+  // Processes the events still due at the current time (as advance_to(now) would), then has the log
+  // written as a finished run's, with status Running: ended by its program (Simulation::finish).
+  void finish_here() override {
+    if (is_finished(status) || !write_error.empty() || guard_->tripped()) return;
+    drive(std::numeric_limits<std::uint64_t>::max(), Time(engine_->time()));
+    if (is_finished(status) || !write_error.empty() || guard_->tripped()) return;  // it ended on its own
+    guard_->on_finish(engine_->time(), engine_->particles(), RunStatus::Running);
+  }
+
+  void measure_impulses() {
+    meter_ = std::make_unique<ImpulseMeter<T>>(setup_.scene.boundary == BoundaryKind::Periodic, setup_.scene.lx,
+                                               setup_.scene.ly);
+    engine_->add_sink(meter_.get());
+  }
+  ImpulseSums impulses() const override {
+    return meter_ ? meter_->sums(double(engine_->time())) : ImpulseSums{double(engine_->time())};
+  }
+
   std::string log_error() const {
     if constexpr (kLogScalar<T>) return log_ ? log_->error() : std::string();
     return {};
@@ -158,6 +178,7 @@ class SimulationOf final : public Simulation::Impl {
   std::unique_ptr<EngineApi<T>> engine_;
   LogWriterFor<T> log_;
   std::unique_ptr<FiniteGuard<T>> guard_;
+  std::unique_ptr<ImpulseMeter<T>> meter_;
   double px0_ = 0, py0_ = 0;
 };
 
@@ -205,6 +226,7 @@ Result<std::unique_ptr<Simulation::Impl>> make_in(RunSetup setup, const Simulati
   const Scene scene = setup.scene;
   auto impl = std::make_unique<SimulationOf<T>>(std::move(setup), std::move(engine).value(), std::move(log), first_logged,
                                                 px0, py0);
+  if (options.impulses) impl->measure_impulses();
   impl->scene = scene;
   impl->options = options;
   impl->log_path = log_path;

@@ -101,6 +101,30 @@ def main():
             time.sleep(0.3)
             open(os.path.join(shots, "view-log.png"), "wb").write(browser.screenshot())
 
+        # The WebGL disk layer (forced: the page prefers its 2D pixels where WebGL is software, as here):
+        # it draws the disks (lit pixels about the disks' area) and they move.
+        browser.goto(server.url + "/?draw=webgl")
+        browser.eval("document.getElementById('setup').click()")
+        browser.wait("edeView.last && edeView.last.info.status === 'paused'", 20)
+        lit_js = ("(() => { const g = document.getElementById('disks-gl'), c = document.createElement('canvas');"
+                  " c.width = g.width; c.height = g.height; const x = c.getContext('2d'); x.drawImage(g, 0, 0);"
+                  " const d = x.getImageData(0, 0, c.width, c.height).data; let n = 0;"
+                  " for (let i = 0; i < d.length; i += 4) if (d[i] || d[i + 1] || d[i + 2]) n++; return n; })()")
+        if browser.eval("edeView.drawer") == "webgl":
+            lit = browser.eval(lit_js)
+            info = browser.eval("edeView.last.info")
+            scale = 720 / max(info["lx"], info["ly"])
+            area = sum(math.pi * (r * scale) ** 2 for r in browser.eval("edeView.drawn().r"))
+            check(0.6 * area < lit < 1.4 * area, f"WebGL draws the disks: {lit} lit pixels, their area {area:.0f}")
+            before = browser.screenshot("#disks")
+            browser.eval("document.getElementById('go').click()")
+            browser.wait("edeView.last.time > 0.05", 20)
+            time.sleep(0.3)
+            check(browser.screenshot("#disks") != before, "WebGL: the disks move")
+            browser.eval("document.getElementById('go').click()")
+        else:
+            check(browser.eval("edeView.renderer").startswith("none"), "no WebGL2 here: the 2D canvas draws (checked above)")
+
         # Bad requests, as the page sees them.
         browser.eval("edeView.openLog('0:nope.ede')")
         browser.wait("document.getElementById('error').textContent.includes('no file')", 10)

@@ -130,6 +130,62 @@ def main():
         status, st = server.post("/api/run/go")
         check(status == 409 and "SETUP" in st["error"], "GO after the end says to press SETUP")
 
+        # FINISH: a run stopped early gets a complete log that verifies and ends at the exact state it
+        # showed; its frames' impulse sums give the walls' pressure of ede-stats pressure on that log.
+        server.json("/api/run/setup", {"scene": "0:gas.toml", "set": ["species[0].count=300"], "until": 1000})
+        server.post("/api/run/pace?pace=0")
+
+        def paused_frame():
+            server.post("/api/run/pause")
+            for _ in range(100):
+                _, st = server.json("/api/run/status")
+                if st["status"] == "paused":
+                    break
+                time.sleep(0.05)
+            time.sleep(0.3)  # the worker publishes the state it paused at
+            status, raw, _ = server.get("/api/run/frame")
+            return parse_frame(raw)
+
+        server.post("/api/run/go")
+        time.sleep(0.5)
+        a, _ = paused_frame()
+        server.post("/api/run/go")
+        time.sleep(0.5)
+        b, cols = paused_frame()
+        check(b["time"] > a["time"] > 0 and b["impulses"]["time"] == b["time"],
+              f"the frames carry the run's impulse sums (t = {a['time']:.3f}, {b['time']:.3f})")
+        status, st = server.post("/api/run/finish")
+        check(status == 200, "FINISH")
+        for _ in range(100):
+            _, st = server.json("/api/run/status")
+            if st["status"].startswith("ended"):
+                break
+            time.sleep(0.05)
+        check(st["status"].startswith("ended: finished here") and st["time"] == b["time"],
+              f"FINISH ends the run where it was paused: {st['status']}")
+        live_log = st["log_path"]
+        _, info = server.json("/api/log/info?name=1:" + st["log"])
+        check(info["complete"], "the finished run's log is complete")
+        r = subprocess.run([os.path.join(tools_dir(), "ede-replay"), "verify", live_log], capture_output=True, text=True)
+        check(r.returncode == 0 and "verified" in r.stdout and "incomplete" not in r.stdout,
+              "ede-replay verify passes on the finished run's log: " + r.stdout.strip()[:200])
+        end_rows = replay_at(live_log, "end")
+        check(len(end_rows) == 300 and all(f32(row["x"]) == cols[0][i] and f32(row["y"]) == cols[1][i]
+                                           for i, row in enumerate(end_rows)),
+              "the log ends at exactly the state the page was shown at FINISH")
+        # Pressure: the page's formula on the two frames' sums, against ede-stats pressure --from a --to b.
+        dt = b["time"] - a["time"]
+        page_p = (sum(b["impulses"]["wall"]) - sum(a["impulses"]["wall"])) / (2 * (b["lx"] + b["ly"]) * dt)
+        csv = os.path.join(server.dir, "pressure.csv")
+        r = subprocess.run([os.path.join(tools_dir(), "ede-stats"), "pressure", live_log, "--from", repr(a["time"]),
+                            "--to", repr(b["time"]), "--blocks", "4", "-o", csv], capture_output=True, text=True)
+        check(r.returncode == 0, "ede-stats pressure reads the finished live log: " + r.stderr[-300:])
+        import csv as csvlib
+        rows = list(csvlib.DictReader(open(csv)))
+        stats_p = sum(float(row["P_wall"]) for row in rows) / len(rows)
+        check(abs(page_p - stats_p) <= 1e-9 * abs(stats_p),
+              f"the live wall pressure over [{a['time']:.4f}, {b['time']:.4f}] is ede-stats pressure's: {page_p:.9g} vs {stats_p:.9g}")
+
         # Two tabs watch one run at a pace; then reverse time: the elastic gas comes back to its start.
         server.json("/api/run/setup", {"scene": "0:gas.toml", "set": ["species[0].count=300"], "until": 50})
         server.post("/api/run/pace?pace=0.5")

@@ -3,8 +3,13 @@
 // paced by requestAnimationFrame, so the page asks for states at its own display rate and a slow machine
 // simply skips frames. window.edeView exposes what was drawn (positions, time, counts) for the tests
 // (tests/tools/view/) and for anyone curious, in the browser's console.
-// Rejected: a framework or a plotting library (a build step or a CDN) and WebGL (the 2D canvas draws
-// 10^5 disks a frame here; the density view covers the rest).
+// Disks are drawn with WebGL2 where the browser has it (gl_draw.js: one instanced point per disk, the
+// circle cut in the fragment shader, straight from the frame's float32 columns), else with the 2D canvas
+// below; the box and wall segments are drawn on a transparent 2D canvas over the WebGL one. The
+// histograms and monitors are redrawn at most 10 times a second while frames stream (they are text and
+// bars nobody reads at 60 Hz, and their layout cost the main thread as much as the disks).
+// Rejected: a framework or a plotting library (a build step or a CDN); WebGL only (a browser without it
+// would show nothing: the 2D path stays as the fallback, and ?draw=2d forces it for comparison).
 'use strict';
 
 const $ = (id) => document.getElementById(id);
@@ -76,6 +81,12 @@ function pixel(hex) {
 }
 
 let image = null;
+// The WebGL2 disk layer (gl_draw.js), or null: then the 2D canvas draws the disks too.
+// ?draw=2d or ?draw=webgl force a path (for the benchmark); by default WebGL unless it is software-rendered
+// and the disks are small enough for the 2D pixel path (gl_draw.js says why).
+const drawMode = new URLSearchParams(location.search).get('draw') || 'auto';
+const gl = drawMode === '2d' ? null : makeGlDisks($('disks-gl'));
+view.renderer = gl ? gl.renderer : 'none (2D canvas)';
 
 // Disks of a few pixels or less are written straight into the image's pixels (each the pixels whose
 // centres lie inside it, at least one): ~10x faster than canvas arcs at 10^4-10^5 disks, and it is the
@@ -87,27 +98,49 @@ function drawDisks(f) {
   const { groups, palette } = colourGroups(f);
   let rmax = 0;
   for (let i = 0; i < f.n; i++) rmax = Math.max(rmax, f.r[i]);
-  if (rmax * scale < 4) {
+  const preferGl = gl && (drawMode === 'webgl' || !gl.software || rmax * scale >= 4);
+  if (preferGl && gl.draw(f, groups, palette, scale, rmax)) {
+    view.drawer = 'webgl';
+    ctx.clearRect(0, 0, W, H);  // the overlay: only the box and the segments
+  } else if (rmax * scale < 4) {
+    view.drawer = '2d-pixels';
+    if (gl) gl.clear();
     if (!image || image.width !== W || image.height !== H) image = ctx.createImageData(W, H);
     const buf = new Uint32Array(image.data.buffer), colours = palette.map(pixel);
     buf.fill(0xff000000);
+    // Each disk is a stamp: the pixels whose centres lie within its radius of the centre of the pixel
+    // holding its centre (at least that pixel), one stamp per pixel radius (a frame has few).
+    const stamps = new Map();
+    const stampOf = (pr) => {
+      const key = Math.round(pr * 16);
+      let st = stamps.get(key);
+      if (!st) {
+        const q = key / 16, e = Math.ceil(q), offsets = [0];
+        for (let dy = -e; dy <= e; dy++)
+          for (let dx = -e; dx <= e; dx++) if ((dx || dy) && dx * dx + dy * dy <= q * q) offsets.push(dy * W + dx);
+        st = { extent: e, offsets: Int32Array.from(offsets) };
+        stamps.set(key, st);
+      }
+      return st;
+    };
+    let st = stampOf(f.r[0] * scale), stampR = f.r[0];
     for (let i = 0; i < f.n; i++) {
-      const px = f.x[i] * scale, py = (ly - f.y[i]) * scale, pr = f.r[i] * scale, colour = colours[groups[i]];
-      const x0 = Math.max(0, Math.floor(px - pr)), x1 = Math.min(W - 1, Math.ceil(px + pr));
-      const y0 = Math.max(0, Math.floor(py - pr)), y1 = Math.min(H - 1, Math.ceil(py + pr));
-      let drawn = false;
-      for (let y = y0; y <= y1; y++) {
-        const dy = y + 0.5 - py;
-        for (let x = x0; x <= x1; x++) {
-          const dx = x + 0.5 - px;
-          if (dx * dx + dy * dy <= pr * pr) { buf[y * W + x] = colour; drawn = true; }
+      if (f.r[i] !== stampR) st = stampOf(f.r[i] * scale), stampR = f.r[i];
+      const cx = Math.floor(f.x[i] * scale), cy = Math.floor((ly - f.y[i]) * scale), colour = colours[groups[i]];
+      const e = st.extent, off = st.offsets, base = cy * W + cx;
+      if (cx >= e && cx < W - e && cy >= e && cy < H - e) {
+        for (let k = 0; k < off.length; k++) buf[base + off[k]] = colour;
+      } else {  // near the edge: each pixel checked
+        for (let k = 0; k < off.length; k++) {
+          const o = off[k], dy = Math.round(o / W), dx = o - dy * W, x = cx + dx, y = cy + dy;
+          if (x >= 0 && x < W && y >= 0 && y < H) buf[y * W + x] = colour;
         }
       }
-      const cx = Math.floor(px), cy = Math.floor(py);
-      if (!drawn && cx >= 0 && cx < W && cy >= 0 && cy < H) buf[cy * W + cx] = colour;
     }
     ctx.putImageData(image, 0, 0);
   } else {
+    view.drawer = '2d-arcs';
+    if (gl) gl.clear();
     ctx.fillStyle = '#000';
     ctx.fillRect(0, 0, W, H);
     for (let p = 0; p < palette.length; p++) {
@@ -176,6 +209,36 @@ function drawPlots(f) {
   drawHistogram('energy-hist', i.energy_hist, mbEnergy, [[i.kT0, '#999'], [i.kT, '#000']]);
 }
 
+// Pressure of a live run from its impulse sums (Simulation::impulses): differences between the newest
+// frame and the oldest one seen in the last 3 s of wall time (at least the two latest), so the value is
+// a window average that follows the run. With walls, the walls' pressure
+//   P = sum |dp_n| / (perimeter * dt);
+// in a periodic box the virial pressure P = (N kT + W / (2 dt)) / A, W = sum r_ij . dp_i over the pair
+// collisions (ede/pressure.hpp; kT the frame's). Units: force per unit length, the scene's mass / time^2.
+let pressureHistory = [];
+function pressure(f) {
+  const p = f.info.impulses;
+  if (!p) return null;
+  const now = performance.now();
+  const last = pressureHistory[pressureHistory.length - 1];
+  if (last && p.time < last.time) pressureHistory = [];
+  if (!last || p.time > last.time) pressureHistory.push({ ...p, wallClock: now });
+  while (pressureHistory.length > 2 && now - pressureHistory[0].wallClock > 3000) pressureHistory.shift();
+  if (pressureHistory.length < 2) return null;
+  const a = pressureHistory[0], b = pressureHistory[pressureHistory.length - 1], dt = b.time - a.time;
+  const i = f.info, area = i.lx * i.ly;
+  let value, formula;
+  if (!i.periodic) {
+    const impulse = b.wall.reduce((s, v) => s + v, 0) - a.wall.reduce((s, v) => s + v, 0);
+    value = impulse / (2 * (i.lx + i.ly) * dt);
+    formula = 'walls';
+  } else {
+    value = (i.disks * i.kT + (b.virial - a.virial) / (2 * dt)) / area;
+    formula = 'virial';
+  }
+  return { value, z: value * area / (i.disks * i.kT), dt, formula };
+}
+
 function monitors(f) {
   const i = f.info, rows = [
     ['time', i.time.toPrecision(6)],
@@ -185,6 +248,8 @@ function monitors(f) {
   rows.push(['collisions per disk', (view.mode === 'log' ? '≈ ' : '') + i.collisions_per_disk.toFixed(2)],
     ['kT (initial)', i.kT.toPrecision(4) + ' (' + i.kT0.toPrecision(4) + ')'],
     ['% slow / medium / fast', i.percent.map((p) => p.toFixed(1)).join(' / ')],
+    ...(view.pressure ? [['pressure, ' + view.pressure.formula + ' (Δt ' + view.pressure.dt.toPrecision(3) + ')',
+      view.pressure.value.toPrecision(4) + ' (Z ' + view.pressure.z.toPrecision(4) + ')']] : []),
     ['disks drawn', f.n.toLocaleString('en') + (i.stride > 1 ? ' (every ' + i.stride + 'th of ' + i.disks.toLocaleString('en') + ')' : '')]);
   if (i.status) rows.push(['run', i.status]);
   if (i.log) rows.push(['log', i.log]);
@@ -195,18 +260,28 @@ function monitors(f) {
   }));
 }
 
-function show(f) {
+let statsWall = 0;
+
+// `streaming`: one of a stream of frames (a running run, a playing log): the histograms and monitors
+// then wait 100 ms since they were last drawn; any other frame draws them.
+function show(f, streaming) {
+  const t0 = performance.now();
+  view.pressure = pressure(f);
   drawDisks(f);
-  drawPlots(f);
-  monitors(f);
+  if (!streaming || t0 - statsWall >= 100) {
+    drawPlots(f);
+    monitors(f);
+    statsWall = t0;
+  }
+  view.drawMs = performance.now() - t0;
   view.frames++;
   view.last = { time: f.info.time, t_request: f.info.t_request, events: f.info.events, n: f.n,
     stride: f.info.stride, x: f.x, y: f.y, r: f.r, info: f.info };
 }
 
-async function fetchFrame(path) {
+async function fetchFrame(path, streaming) {
   const res = await api(path);
-  show(parseFrame(await res.arrayBuffer()));
+  show(parseFrame(await res.arrayBuffer()), streaming);
 }
 
 // --- live runs ---------------------------------------------------------------------------------------
@@ -245,7 +320,8 @@ async function setup() {
       body: JSON.stringify({ scene: $('scene').value, set, until: Number($('until').value) || 100 }) });
     liveRunning = false;
     $('go').textContent = 'GO';
-    $('go').disabled = $('reverse').disabled = false;
+    $('go').disabled = $('reverse').disabled = $('finish').disabled = false;
+    pressureHistory = [];
     await sendPace();
     liveDirty = true;
   } catch (e) { showError(e.message); }
@@ -258,6 +334,18 @@ async function goPause() {
     $('go').textContent = liveRunning ? 'PAUSE' : 'GO';
     liveDirty = true;
     if (!liveRunning) setTimeout(() => { liveDirty = true; }, 300);  // the state the worker stopped at
+  } catch (e) { showError(e.message); }
+}
+
+// FINISH: the run ends here and its log is complete at this time (Simulation::finish in the server).
+async function finishRun() {
+  try {
+    await api('/api/run/finish', { method: 'POST' });
+    liveRunning = false;
+    $('go').textContent = 'GO';
+    $('go').disabled = $('reverse').disabled = $('finish').disabled = true;
+    liveDirty = true;
+    setTimeout(() => { liveDirty = true; }, 300);  // the state the run finished at
   } catch (e) { showError(e.message); }
 }
 
@@ -309,7 +397,7 @@ async function tick() {
       const buffer = await (pending || liveFetch());
       pending = liveRunning ? liveFetch() : null;
       if (prefetched && !liveRunning) liveDirty = true;  // fetched before PAUSE: fetch the paused state too
-      show(parseFrame(buffer));
+      show(parseFrame(buffer), liveRunning);
     } else if (view.mode === 'log' && logInfo) {
       if (play) {
         const t = playFrom + play * Number($('play-speed').value) * (performance.now() - playWall) / 1000;
@@ -318,7 +406,7 @@ async function tick() {
       }
       if (logWanted !== null && logWanted !== logShown) {
         const want = logWanted;
-        await fetchFrame('/api/log/frame?name=' + encodeURIComponent($('log').value) + '&t=' + encodeURIComponent(want));
+        await fetchFrame('/api/log/frame?name=' + encodeURIComponent($('log').value) + '&t=' + encodeURIComponent(want), play !== 0);
         logShown = want;
       }
     }
@@ -342,6 +430,7 @@ async function init() {
   $('scene').addEventListener('change', () => loadScene().catch((e) => showError(e.message)));
   $('setup').addEventListener('click', setup);
   $('go').addEventListener('click', goPause);
+  $('finish').addEventListener('click', finishRun);
   $('reverse').addEventListener('click', () => api('/api/run/reverse', { method: 'POST' }).catch((e) => showError(e.message)));
   $('pace').addEventListener('input', sendPace);
   $('fastest').addEventListener('change', sendPace);
