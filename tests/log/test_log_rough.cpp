@@ -6,12 +6,15 @@
 #include <capnp/serialize.h>
 
 #include <cstring>
+#include <fstream>
+#include <iterator>
 
 #include "ede/log.hpp"
 #include "ede/simulation.hpp"
 #include "log/log_messages.hpp"
 #include "log_test_support.hpp"
 #include "reference_reader.hpp"
+#include "setup/setup_from_csv.hpp"
 
 using namespace ede;
 using namespace ede::test;
@@ -164,6 +167,19 @@ interval = 0.5
   for (std::size_t i = 0; i < end.size(); ++i) {
     REQUIRE(state.value().omega[i] == end.omega[i]);
     REQUIRE(state.value().vx[i] == end.vx[i]);
+  }
+  // The state CSV carries omega and inertia, and a start from it reads them back exactly.
+  const std::string csv = temp_path("rough-state.csv");
+  REQUIRE(write_state_csv(csv, state.value()).ok());
+  std::ifstream in(csv);
+  const std::string csv_text((std::istreambuf_iterator<char>(in)), {});
+  CHECK(csv_text.rfind("id,species,x,y,vx,vy,radius,mass,omega,inertia\n", 0) == 0);
+  auto back = parse_state_csv(csv_text, csv);
+  REQUIRE(back.ok());
+  REQUIRE(back.value().omega.size() == end.size());
+  for (std::size_t i = 0; i < end.size(); ++i) {
+    REQUIRE(back.value().omega[i] == end.omega[i]);
+    REQUIRE(back.value().inertia[i] == end.inertia[i]);
   }
   auto events = log.value().events({});
   REQUIRE(events.ok());

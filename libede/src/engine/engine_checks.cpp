@@ -49,6 +49,8 @@ Status check_engine_input(const InitialState& init, const EngineOptions& options
   if (!beta_in_range) return Error{"roughness coefficients (beta) must lie in [-1, 1]"};
   if (uses_rotation(options) && (ph.has_gravity() || !ph.segments.empty()))
     return Error{"rough or spinning disks under gravity or with wall segments are not supported yet; make them smooth"};
+  if ((!init.omega.empty() && init.omega.size() != n) || (!init.inertia.empty() && init.inertia.size() != n))
+    return Error{"the initial state's angular velocities or moments of inertia do not match its disk count"};
   for (std::size_t i = 0; i < init.omega.size(); ++i)
     if (!finite(init.omega[i]) || (i < init.inertia.size() && !(init.inertia[i] > 0 && finite(init.inertia[i]))))
       return Error{"disk " + std::to_string(i) + " has a non-finite angular velocity or a non-positive moment of inertia"};
