@@ -669,7 +669,11 @@ class Engine final : public EngineApi<T> {
     b.last_partner = i;
     ++counts_.by_kind[int(EventKind::Pair)];
     if (by_tc) ++counts_.tc_elastic;
-    if (!sinks_.empty()) emit({now_, EventKind::Pair, by_tc, i, j, a.vx, a.vy, b.vx, b.vy, vix0, viy0, vjx0, vjy0});
+    if (!sinks_.empty()) {
+      EventOutcome<T> o{now_, EventKind::Pair, by_tc, i, j, a.vx, a.vy, b.vx, b.vy, vix0, viy0, vjx0, vjy0};
+      if constexpr (kRough) o.wi = p_.omega[i], o.wj = p_.omega[j];
+      emit(o);
+    }
     predict(i);
     predict(j);
   }
@@ -700,7 +704,11 @@ class Engine final : public EngineApi<T> {
     d.last_partner = -1;
     ++counts_.by_kind[int(EventKind::Wall)];
     if (by_tc) ++counts_.tc_elastic;
-    if (!sinks_.empty()) emit({now_, EventKind::Wall, by_tc, i, wall, d.vx, d.vy, T(0), T(0), vx0, vy0, T(0), T(0)});
+    if (!sinks_.empty()) {
+      EventOutcome<T> o{now_, EventKind::Wall, by_tc, i, wall, d.vx, d.vy, T(0), T(0), vx0, vy0, T(0), T(0)};
+      if constexpr (kRough) o.wi = p_.omega[i];
+      emit(o);
+    }
     predict(i);
   }
 
