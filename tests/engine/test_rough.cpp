@@ -152,6 +152,7 @@ TEST_CASE("rough: beta = -1 in the rough engines is the smooth engines bit for b
   EngineOptions p = o;
   p.boundary = BoundaryKind::Periodic;
   p.physics.restitution = 1;
+  p.physics.wall_restitution = 1;  // counts even in a periodic box (PhysicsSpec::elastic)
   check_same_events(run_as(EngineKind::PeriodicRough, gas, p), run_as(EngineKind::PeriodicElastic, gas, p));
   // Spinning disks with smooth contacts keep their spins and move exactly as smooth disks do.
   InitialState spinning = gas;

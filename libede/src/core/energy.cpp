@@ -34,7 +34,7 @@ double kinetic_energy(const Particles<T>& p) {
     const long double vx = p.disk[i].vx, vy = p.disk[i].vy;
     sum += 0.5L * (long double)p.mass[i] * (vx * vx + vy * vy);
   }
-  return double(sum);
+  return double(sum + rotational_sum(p));  // + 0 exactly for smooth disks
 }
 
 template <class T>
@@ -55,7 +55,7 @@ double kinetic_energy(const Particles<T>& p, T t) {
     const long double vx = p.vx_at(i, t), vy = p.vy_at(i, t);
     sum += 0.5L * (long double)p.mass[i] * (vx * vx + vy * vy);
   }
-  return double(sum);
+  return double(sum + rotational_sum(p));
 }
 
 template <class T>

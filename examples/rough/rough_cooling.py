@@ -14,7 +14,7 @@ t = 0. Nothing is fitted. The theory assumes Maxwellian velocities and molecular
 gases follow it to a few per cent (Luding et al. 1998), so the script checks the end temperatures within
 10 % and the ratio T_rot/T_tr within 0.05.
 
-usage: cooling.py [--out-dir DIR] [--quick]
+usage: rough_cooling.py [--out-dir DIR] [--quick]
 """
 import math
 import pathlib
