@@ -91,4 +91,10 @@ section "effusion through a hole in a divider, against kinetic theory (examples/
 "$py" "$root/examples/scripts/effusion.py" "$tools" "$out"
 "$tools/ede-render" "$out/effusion.ede" --at 20 --color speed -o "$out/effusion-picture.png"
 
+section "rough disks: cooling against Huthmann-Zippelius (examples/rough/cooling.toml)"
+PYTHONPATH="$build/python${PYTHONPATH:+:$PYTHONPATH}" "$py" "$root/examples/rough/rough_cooling.py" --out-dir "$out"
+
+section "heat capacity (c = k smooth, 3k/2 rough) and the ideal-gas law (examples/rough/*.toml)"
+PYTHONPATH="$build/python${PYTHONPATH:+:$PYTHONPATH}" "$py" "$root/examples/rough/heat_capacity.py" --out-dir "$out"
+
 printf '\nall figures in %s (%s s)\n' "$out" "$(( $(date +%s) - start ))"

@@ -39,10 +39,11 @@ inline bool fuzz_columns(const std::uint8_t* data, std::size_t size) {
   ede::MessageWords storage((size + 7) / 8 + 1, 0);  // zeroed: the tail past `size` is never a column, but keep it defined
   auto* bytes = reinterpret_cast<unsigned char*>(storage.data());
   std::memcpy(bytes, data, size);
-  const unsigned char* cols[6];
-  std::size_t sizes[6];
+  constexpr int kCols = ede::ChunkDecoder<double>::kColumnCount;  // every column the decoder reads, spins too
+  const unsigned char* cols[kCols];
+  std::size_t sizes[kCols];
   std::size_t at = 2;
-  for (int c = 0; c < 6; ++c) {
+  for (int c = 0; c < kCols; ++c) {
     const std::size_t want = at < size ? std::size_t(data[at]) * 4 : 0;
     at = std::min(at + 1, size);
     sizes[c] = std::min(want, size - at);

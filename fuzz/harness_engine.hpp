@@ -3,10 +3,11 @@
 // The bytes choose 2-50 disks (radii, masses up to a ratio of 10^4, velocities), or 128-264 small disks with
 // up to three big ones (kept out of the cell lists, big_disks.hpp), the boundary (walls or
 // periodic), restitution for pairs and walls, the TC model, in a walled box up to four wall segments
-// anywhere (the disks they cross removed), then run at most 3000 events while writing a log. Checked after every slice of events and at the end:
+// anywhere (the disks they cross removed), or (walls without segments, or periodic) rough spinning disks with
+// random beta for pairs and walls, then run at most 3000 events while writing a log. Checked after every slice of events and at the end:
 //   - no pair overlaps by more than 1e-6 of its contact distance, and no prediction lies in the past;
-//   - kinetic energy is constant (1e-10 relative) when every collision is elastic, never increases
-//     otherwise;
+//   - kinetic energy (rotation included) is constant (1e-10 relative) when every collision is elastic
+//     (rough disks: beta = +-1), never increases otherwise;
 //   - momentum is constant in periodic boxes (no walls), for any restitution;
 //   - the log replays to the engine's exact state (every record, bit for bit).
 // A violation traps, which libFuzzer reports with the input that caused it.
@@ -54,6 +55,7 @@ inline Totals totals(const ede::Particles<double>& p) {
     t.py += m * vy;
     t.scale += m * std::hypot(vx, vy);
   }
+  for (std::size_t i = 0; i < p.omega.size(); ++i) t.energy += 0.5 * p.inertia[i] * p.omega[i] * p.omega[i];
   return t;
 }
 
@@ -157,6 +159,22 @@ inline bool fuzz_engine(const std::uint8_t* data, std::size_t size) {
   o.stall_limit = 20000;
   ede::InitialState s = make_state(in, (flags & 16) != 0);
   if ((flags & 32) && o.boundary == ede::BoundaryKind::Walls) add_segments(in, (flags & 2) != 0, s, o.physics);
+  // Rough disks (not with segments): beta for pairs and walls, -1, +1 or anywhere between; spins up to
+  // ~|v| / r; I = f m r^2 with f in [0.1, 1].
+  const bool rough = (flags & 64) && o.physics.segments.empty();
+  if (rough) {
+    const auto beta = [&] {
+      const std::uint8_t b = in.byte();
+      return b < 64 ? -1.0 : b < 128 ? 1.0 : 2 * in.unit() - 1;
+    };
+    o.physics.roughness = beta();
+    o.physics.wall_roughness = beta();
+    o.rotation = true;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      s.inertia.push_back((0.1 + 0.9 * in.unit()) * s.mass[i] * s.radius[i] * s.radius[i]);
+      s.omega.push_back((2 * in.unit() - 1) / s.radius[i]);
+    }
+  }
   if (s.size() == 0) return true;
   auto made = ede::make_engine<double>(s, o);
   CHECK_OR_FAIL(made.ok());  // the grid placement is valid by construction
@@ -171,6 +189,11 @@ inline bool fuzz_engine(const std::uint8_t* data, std::size_t size) {
   info.rebuild_interval = o.rebuild_interval;
   for (const ede::SegmentSpec& g : o.physics.segments)  // replay predicts segment events from these
     info.segments.insert(info.segments.end(), {g.from[0], g.from[1], g.to[0], g.to[1], g.restitution});
+  if (rough) {  // the header's 1 + beta: replay predicts the spins from them
+    info.rotation = true;
+    info.pair_roughness = {o.physics.roughness};
+    info.wall_roughness = o.physics.wall_roughness;
+  }
   ede::LogSettings settings;
   settings.chunk_events = 64;
   settings.keyframe_interval = 256;
@@ -179,7 +202,8 @@ inline bool fuzz_engine(const std::uint8_t* data, std::size_t size) {
   engine.add_sink(writer.value().get());
 
   const Totals start = totals(engine.particles());
-  const bool elastic = o.physics.elastic();
+  const auto keeps = [](double beta) { return beta == -1 || beta == 1; };
+  const bool elastic = o.physics.elastic() && (!rough || (keeps(o.physics.roughness) && keeps(o.physics.wall_roughness)));
   ede::RunStatus status;
   while ((status = engine.run(250)) == ede::RunStatus::Running) {
     CHECK_OR_FAIL(engine.check_invariants(1e-6).empty());
@@ -203,6 +227,7 @@ inline bool fuzz_engine(const std::uint8_t* data, std::size_t size) {
     const ede::Disk<double>& a = replay.value()->particles().disk[i];
     const ede::Disk<double>& b = engine.particles().disk[i];
     CHECK_OR_FAIL(same(a.x, b.x) && same(a.y, b.y) && same(a.vx, b.vx) && same(a.vy, b.vy) && same(a.t, b.t));
+    if (rough) CHECK_OR_FAIL(same(replay.value()->particles().omega[i], engine.particles().omega[i]));
   }
   (void)status;
   return true;

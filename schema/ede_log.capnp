@@ -51,6 +51,10 @@ struct Header {
   # keyframe repeats it, so records of another run spliced behind this header are refused. 0: not recorded
   # (logs written before it), then nothing is checked.
   runId @25 :UInt32;
+  # Rough disks (FORMAT.md, "Rotation"): only a run whose disks carry an angular velocity writes these
+  # (its header is then built with them; every other run's header keeps its earlier size and bytes).
+  inertia @26 :Data;              # diskCount scalars, byte-plane shuffled: each disk's moment of inertia
+  onePlusBeta @27 :Data;          # S x S + 4 scalars: 1 + beta of species pair (a, b) at a S + b, then of the 4 walls
 }
 
 # A run of consecutive logged events, stored as columns (FORMAT.md, "Chunk columns").
@@ -65,6 +69,7 @@ struct Chunk {
   velocityResiduals @7 :Data;    # encoding 1: pair v_j' against momentum, wall v' against reflection;
                                  # encoding 2: pair v_i', v_j' and wall v' against the collision rules
   runId @8 :UInt32;              # the header's runId (0 in logs written before it)
+  spinResiduals @9 :Data;        # rough runs only: pair w_i', w_j' and wall w' against the rough rule (FORMAT.md)
 }
 
 # The full state after a given number of logged events.
@@ -84,6 +89,7 @@ struct Keyframe {
   nextAction @12 :UInt64;       # resumable: actions already done
   sameTimeEvents @13 :UInt64;   # resumable: the stall detector's count
   runId @14 :UInt32;            # the header's runId (0 in logs written before it)
+  omega @15 :Data;              # rough runs only: per disk, raw scalars, byte-plane shuffled: angular velocity
 }
 
 # The last record: where every chunk and keyframe is, and how the run ended.

@@ -43,6 +43,11 @@ std::vector<EffectConfig> effect_configs() {
       {"wall segments (a divider)",
        {"walls.segments=[{from=[0.5,0.0],to=[0.5,0.45]},{from=[0.5,0.55],to=[0.5,1.0]}]"},
        false},
+      // Rough disks (omega per disk, the tangential impulse): the rough engine's cost on the same gas,
+      // perfectly rough (elastic) and partly rough. Smooth scenes never run it (engine_factory.hpp): their
+      // rows above are what they cost; the all-effects engine has no rotation, so that column stays empty.
+      {"rough disks (beta = beta_w = 1)", {"physics.roughness=1", "physics.wall_roughness=1"}, false},
+      {"rough disks (beta = 0.5, xi = 0.98)", {inelastic_pairs, "physics.roughness=0.5"}, false},
       {"every effect (weak g)", {inelastic_pairs, "physics.pairs[0].restitution=0.9", "physics.wall_restitution=0.9",
                                  "physics.tc=1e-5", "physics.gravity=[0, -0.001]"}},
   };

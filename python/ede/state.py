@@ -10,17 +10,19 @@ class State:
     x, y, vx, vy, radius, mass: numpy arrays in the run's scalar type (float32, float64 or longdouble),
     bit-identical to the engine's state (and to ``ede-replay --at``); species: int32 index into
     species_names; id: the disks' ids (0..N-1, the arrays' order). Positions are those at ``time``.
+    omega, inertia: angular velocity and moment of inertia per disk for rough (rotating) disks, else None.
     The arrays are views of the library's own buffers: read-only unless copied.
     """
 
     __slots__ = ("time", "time_text", "events", "scalar", "lx", "ly", "boundary", "x", "y", "vx", "vy",
-                 "radius", "mass", "species", "species_names")
+                 "radius", "mass", "species", "species_names", "omega", "inertia")
 
     def __init__(self, d):
         for k in self.__slots__:
-            setattr(self, k, d[k])
-        for k in ("x", "y", "vx", "vy", "radius", "mass", "species"):
-            getattr(self, k).flags.writeable = False
+            setattr(self, k, d.get(k))  # omega and inertia only for rough disks
+        for k in ("x", "y", "vx", "vy", "radius", "mass", "species", "omega", "inertia"):
+            if getattr(self, k) is not None:
+                getattr(self, k).flags.writeable = False
 
     def __len__(self):
         return len(self.species)
@@ -37,6 +39,13 @@ class State:
     def kinetic_energy(self):
         return 0.5 * self.mass * (self.vx * self.vx + self.vy * self.vy)
 
+    @property
+    def rotational_energy(self):
+        """I w^2 / 2 per disk (zeros for smooth disks)."""
+        if self.omega is None:
+            return np.zeros(len(self))
+        return 0.5 * self.inertia * self.omega * self.omega
+
     def species_mask(self, name):
         """A boolean mask of the disks of species `name`."""
         try:
@@ -47,8 +56,11 @@ class State:
 
     def to_dict(self):
         """The columns as a dict (for pandas.DataFrame(state.to_dict()))."""
-        return {"id": self.id, "species": np.asarray(self.species_names, dtype=object)[self.species],
-                "x": self.x, "y": self.y, "vx": self.vx, "vy": self.vy, "radius": self.radius, "mass": self.mass}
+        d = {"id": self.id, "species": np.asarray(self.species_names, dtype=object)[self.species],
+             "x": self.x, "y": self.y, "vx": self.vx, "vy": self.vy, "radius": self.radius, "mass": self.mass}
+        if self.omega is not None:
+            d["omega"], d["inertia"] = self.omega, self.inertia
+        return d
 
     def __repr__(self):
         return "<ede.State %d disks at t=%s (%s, %d events)>" % (len(self), self.time_text, self.scalar, self.events)

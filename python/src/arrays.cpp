@@ -43,6 +43,10 @@ py::dict state_dict(State&& state) {
   d["radius"] = column_array(s.radius, owner), d["mass"] = column_array(s.mass, owner);
   d["species"] = py::array_t<std::int32_t>({s.species.size()}, {sizeof(std::int32_t)}, s.species.data(), owner);
   d["species_names"] = s.species_names;
+  if (s.rotates()) {  // rough or spinning disks: angular velocity and moment of inertia per disk
+    d["omega"] = column_array(s.omega, owner);
+    d["inertia"] = column_array(s.inertia, owner);
+  }
   return d;
 }
 

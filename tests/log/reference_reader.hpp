@@ -37,6 +37,7 @@ template <class T>
 struct Record {
   T x{}, y{}, vx{}, vy{}, t{}, r{}, m{};
   std::uint32_t species = 0;
+  T w{}, inertia{};  // rough logs (FORMAT.md, "Rotation")
 };
 
 template <class T>
@@ -129,6 +130,13 @@ class Reader {
       g.k = T(1) + xi_wall_[k + 4];
       seg_.push_back(g);
     }
+    rough_ = !h.inertia.empty();
+    if (rough_) {
+      const std::vector<T> inertia = shuffled_scalars<T>(h.inertia.data(), h.inertia.size());
+      for (std::size_t i = 0; i < disk_.size(); ++i) disk_[i].inertia = inertia[i];
+      for (std::size_t k = 0; k < h.one_plus_beta.size(); k += kWidth<T>)
+        one_plus_beta_.push_back(scalar_at<T>(h.one_plus_beta.data() + k));
+    }
   }
 
   // Replays the whole log from its first keyframe; after each chunk, `check(events so far, records)`.
@@ -155,6 +163,10 @@ class Reader {
     const std::vector<T> x = col(k.getX()), y = col(k.getY()), vx = col(k.getVx()), vy = col(k.getVy()), t = col(k.getT());
     for (std::size_t i = 0; i < disk_.size(); ++i)
       disk_[i].x = x[i], disk_[i].y = y[i], disk_[i].vx = vx[i], disk_[i].vy = vy[i], disk_[i].t = t[i];
+    if (rough_) {
+      const std::vector<T> w = col(k.getOmega());
+      for (std::size_t i = 0; i < disk_.size(); ++i) disk_[i].w = w[i];
+    }
   }
 
   // "Bring a disk to t", with gravity g along each axis (none: x + v (t - t_disk)).
@@ -293,6 +305,7 @@ class Reader {
     Bytes times{c.getTimes().begin(), c.getTimes().end()}, kinds{c.getKinds().begin(), c.getKinds().end()};
     Bytes disks{c.getDisks().begin(), c.getDisks().end()}, partners{c.getPartners().begin(), c.getPartners().end()};
     Bytes residuals{c.getVelocityResiduals().begin(), c.getVelocityResiduals().end()};
+    Bytes spins{c.getSpinResiduals().begin(), c.getSpinResiduals().end()};
     const std::vector<unsigned char> raw = unshuffle(c.getVelocitiesRaw().begin(), c.getVelocitiesRaw().size(), kWidth<T>);
     std::size_t raw_at = 0;
     U128 previous = 0;
@@ -340,10 +353,21 @@ class Reader {
           const T vn = (b.vx - a.vx) * nx + (b.vy - a.vy) * ny;
           const T impulse = k * vn / (a.m + b.m);
           const T ki = impulse * b.m, kj = impulse * a.m;
-          v[0] = read_residual(residuals, a.vx + ki * nx);
-          v[1] = read_residual(residuals, a.vy + ki * ny);
-          v[2] = read_residual(residuals, b.vx - kj * nx);
-          v[3] = read_residual(residuals, b.vy - kj * ny);
+          T p[4] = {a.vx + ki * nx, a.vy + ki * ny, b.vx - kj * nx, b.vy - kj * ny};
+          T wa = a.w, wb = b.w;
+          // Rough: the tangential impulse from the velocities and spins before, unless 1 + beta = 0.
+          const T kb = tc || !rough_ ? T(0) : one_plus_beta_[a.species * species_ + b.species];
+          if (kb != T(0)) {
+            const T tx = -(dy / dist), ty = dx / dist;
+            const T gt = ((b.vx - a.vx) * tx + (b.vy - a.vy) * ty) - (a.r * a.w + b.r * b.w);
+            const T kk = ((T(1) / a.m + T(1) / b.m) + a.r * a.r / a.inertia) + b.r * b.r / b.inertia;
+            const T pt = kb * gt / kk;
+            p[0] = p[0] + (pt / a.m) * tx, p[1] = p[1] + (pt / a.m) * ty;
+            p[2] = p[2] - (pt / b.m) * tx, p[3] = p[3] - (pt / b.m) * ty;
+            wa = wa + a.r * pt / a.inertia, wb = wb + b.r * pt / b.inertia;
+          }
+          for (int q = 0; q < 4; ++q) v[q] = read_residual(residuals, p[q]);
+          if (rough_) a.w = read_residual(spins, wa), b.w = read_residual(spins, wb);
         }
         a.vx = v[0], a.vy = v[1], b.vx = v[2], b.vy = v[3];
       } else if (kind == 1) {
@@ -356,6 +380,19 @@ class Reader {
         } else {
           const T xi = xi_wall_[std::size_t(j)];
           px = vertical ? -xi * a.vx : xi * a.vx, py = vertical ? xi * a.vy : -xi * a.vy;
+        }
+        if (rough_) {
+          T wa = a.w;
+          const T kb = tc ? T(0) : one_plus_beta_[species_ * species_ + std::size_t(j)];
+          if (kb != T(0)) {
+            const T nx = j == 0 ? T(-1) : j == 1 ? T(1) : T(0), ny = j == 2 ? T(-1) : j == 3 ? T(1) : T(0);
+            const T tx = -ny, ty = nx;
+            const T gt = (T(0) - (a.vx * tx + a.vy * ty)) - a.r * a.w;
+            const T pt = kb * gt / (T(1) / a.m + a.r * a.r / a.inertia);
+            px = px + (pt / a.m) * tx, py = py + (pt / a.m) * ty;
+            wa = wa + a.r * pt / a.inertia;
+          }
+          a.w = read_residual(spins, wa);
         }
         const T vx = read_residual(residuals, px);
         a.vy = read_residual(residuals, py);
@@ -402,7 +439,7 @@ class Reader {
       } else if (kind == 4) {
         for (Record<T>& d : disk_) {
           bring(d, t);
-          d.vx = -d.vx, d.vy = -d.vy;
+          d.vx = -d.vx, d.vy = -d.vy, d.w = -d.w;
         }
       }
     }
@@ -415,6 +452,8 @@ class Reader {
   std::uint32_t version_ = 1;
   std::size_t species_ = 1;
   std::vector<T> one_plus_xi_, xi_wall_;
+  bool rough_ = false;
+  std::vector<T> one_plus_beta_;  // S x S pairs, then the 4 walls
   std::vector<Seg> seg_;
 };
 

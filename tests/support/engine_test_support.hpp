@@ -18,6 +18,7 @@ class Recorder final : public Sink<T> {
   std::vector<EventOutcome<T>> events;
   std::vector<T> sample_times;
   std::vector<std::vector<Disk<T>>> sample_states;  // positions drifted to the sample time
+  std::vector<std::vector<T>> sample_omegas;        // rough engines: the spins at each sample
   bool keep_states = false;
 
   void on_event(const EventOutcome<T>& e, const Particles<T>&) override { events.push_back(e); }
@@ -31,6 +32,7 @@ class Recorder final : public Sink<T> {
       s[i].t = t;
     }
     sample_states.push_back(s);
+    sample_omegas.push_back(p.omega);
   }
   std::vector<EventOutcome<T>> of_kind(EventKind k) const {
     std::vector<EventOutcome<T>> out;

@@ -38,6 +38,7 @@ LoggedRun<T> run_logged(const InitialState& s, const EngineOptions& o, const std
   info.tc_model = o.physics.tc > 0 && !o.physics.elastic();
   info.gx = o.physics.gravity[0];
   info.gy = o.physics.gravity[1];
+  info.rotation = uses_rotation(o);
   auto writer = LogWriter<T>::create(r.path, info, settings);
   if (!writer) throw std::runtime_error(writer.error().message);
   r.recorder->keep_states = true;

@@ -74,6 +74,8 @@ struct Event {
   // Velocities just before and just after the event (pair: both disks; wall, segment: i; wrap: i's, unchanged).
   Time vix_before = 0, viy_before = 0, vjx_before = 0, vjy_before = 0;
   Time vix = 0, viy = 0, vjx = 0, vjy = 0;
+  // Rough logs: angular velocities just before and just after (pair: both disks; wall: i; else unchanged).
+  Time omega_i_before = 0, omega_j_before = 0, omega_i = 0, omega_j = 0;
 };
 
 }  // namespace ede

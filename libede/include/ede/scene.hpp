@@ -67,6 +67,15 @@ struct VelocitySpec {
   std::vector<std::array<double, 2>> list;   // List: one [vx, vy] per disk
 };
 
+// The initial angular velocity of a species' disks (rough disks, docs/physics.md): zero, one value for
+// every disk, or drawn per disk, omega ~ N(0, kT / I), from the species' own random stream after its
+// velocities (so a scene's velocities do not change when spin is added).
+struct SpinSpec {
+  enum class Kind { Zero, Value, Maxwell } kind = Kind::Zero;
+  double omega = 0;        // Value
+  double temperature = 0;  // Maxwell: kT of the rotation (k = 1)
+};
+
 struct SpeciesSpec {
   std::string name;
   std::int64_t count = 0;
@@ -74,6 +83,8 @@ struct SpeciesSpec {
   MassSpec mass;
   PlacementSpec placement;
   VelocitySpec velocity;
+  double inertia_factor = 0.5;  // moment of inertia I = inertia_factor * m r^2 (0.5: a uniform disk)
+  SpinSpec spin;
 };
 
 struct StopSpec {  // the run ends at the first condition met; at least one must be given
@@ -93,6 +104,7 @@ struct ActionSpec {
 struct PairRestitution {  // the restitution between disks of two species (by name), overriding the default
   std::string a, b;
   double value = 1;
+  std::optional<double> roughness;  // beta of this pair (rough disks); absent: physics.roughness
 };
 
 // A straight wall segment from `from` to `to` ([walls] in a scene: [[walls.segments]], or the sides of a
@@ -113,6 +125,11 @@ struct PhysicsSpec {
   double tc = 0;                       // TC model: a collision within tc of a participant's previous one is elastic
   std::array<double, 2> gravity{0, 0};  // constant acceleration (walls only)
   std::vector<SegmentSpec> segments;    // wall segments inside the box (walls boundary, no gravity)
+  // Rough disks (docs/physics.md): the tangential restitution beta in [-1, 1] of pairs and of the box
+  // walls. -1 (the default) is smooth: the contact's tangential velocity is kept and nothing rotates;
+  // +1 reverses it (perfectly rough, energy conserved with xi = 1).
+  double roughness = -1;
+  double wall_roughness = -1;
 
   double wall(int side) const { return walls[std::size_t(side)].value_or(wall_restitution); }
   bool has_gravity() const { return gravity[0] != 0 || gravity[1] != 0; }
@@ -123,6 +140,13 @@ struct PhysicsSpec {
     for (const PairRestitution& p : pairs) all = all && p.value == 1;
     for (const SegmentSpec& s : segments) all = all && s.restitution == 1;
     return all;
+  }
+  double pair_roughness(const PairRestitution& p) const { return p.roughness.value_or(roughness); }
+  // Some contact transfers spin: a beta above -1 for pairs, walls or a pair of species.
+  bool rough() const {
+    bool any = roughness > -1 || wall_roughness > -1;
+    for (const PairRestitution& p : pairs) any = any || pair_roughness(p) > -1;
+    return any;
   }
 };
 
@@ -178,6 +202,14 @@ struct Scene {
   StopSpec stop;
   std::optional<double> sample_interval;  // observers see the exact state at k * interval, k = 1, 2, ...
   std::vector<ActionSpec> actions;        // sorted by time
+
+  // The disks carry an angular velocity: some contact is rough or some species starts spinning. Such a
+  // run has omega and I per disk in its state and log; any other run is exactly what it was before.
+  bool rotates() const {
+    bool any = physics.rough();
+    for (const SpeciesSpec& s : species) any = any || s.spin.kind != SpinSpec::Kind::Zero;
+    return any;
+  }
 };
 
 const char* to_string(BoundaryKind);

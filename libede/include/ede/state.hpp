@@ -58,11 +58,16 @@ struct State {
   Column x, y, vx, vy, radius, mass;        // one entry per disk, in id order
   std::vector<std::int32_t> species;        // index into species_names
   std::vector<std::string> species_names;
+  // Rough or spinning disks only (else empty): angular velocity (counter-clockwise positive; constant
+  // between collisions) and moment of inertia per disk.
+  Column omega, inertia;
 
   std::size_t size() const { return species.size(); }
+  bool rotates() const { return !omega.empty(); }
 };
 
-// The state as CSV: header id,species,x,y,vx,vy,radius,mass, one row per disk in id order, every number
+// The state as CSV: header id,species,x,y,vx,vy,radius,mass (then omega,inertia for rough or spinning
+// disks), one row per disk in id order, every number
 // with the digits that read back to the identical value of its type (float 9, double 17, long double 21),
 // so a CSV is an exact snapshot (ede-replay --at and ede-sim --final-state write it).
 void write_state_csv(std::FILE* out, const State& state);

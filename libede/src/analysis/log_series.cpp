@@ -73,15 +73,15 @@ class EnergyWalk {
   void apply(const ReplayedEvent<T>& e) {
     switch (e.kind) {
       case EventKind::Pair:
-        set(std::size_t(e.i), e.vix, e.viy);
-        set(std::size_t(e.j), e.vjx, e.vjy);
+        set(std::size_t(e.i), e.vix, e.viy, e.wi);
+        set(std::size_t(e.j), e.vjx, e.vjy, e.wj);
         ++pairs_;
         break;
       case EventKind::Wall:
-        set(std::size_t(e.i), e.vix, e.viy);
+        set(std::size_t(e.i), e.vix, e.viy, e.wi);
         ++walls_;
         break;
-      case EventKind::Segment: set(std::size_t(e.i), e.vix, e.viy); break;
+      case EventKind::Segment: set(std::size_t(e.i), e.vix, e.viy, T(0)); break;
       case EventKind::Action: resync(); break;
       default: break;  // wraps move a disk, not its velocity
     }
@@ -109,8 +109,14 @@ class EnergyWalk {
   }
 
  private:
-  void set(std::size_t i, T vx, T vy) {
-    const long double e = energy_of(p_.mass[i], vx, vy);
+  // Rough logs: a disk's energy includes I w^2 / 2 (smooth logs have no spins: + 0, exactly).
+  long double spin_energy(std::size_t i, T w) const {
+    if (p_.omega.empty()) return 0.0L;
+    const long double x = w;
+    return 0.5L * (long double)p_.inertia[i] * (x * x);
+  }
+  void set(std::size_t i, T vx, T vy, T w) {
+    const long double e = energy_of(p_.mass[i], vx, vy) + spin_energy(i, w);
     const long double delta = e - energy_[i];
     total_ += delta;
     species_sum_[std::size_t(p_.species[i])] += delta;
@@ -123,7 +129,8 @@ class EnergyWalk {
     total_ = 0;
     std::fill(species_sum_.begin(), species_sum_.end(), 0.0L);
     for (std::size_t i = 0; i < p_.size(); ++i) {
-      energy_[i] = energy_of(p_.mass[i], p_.disk[i].vx, p_.disk[i].vy);
+      energy_[i] = energy_of(p_.mass[i], p_.disk[i].vx, p_.disk[i].vy) +
+                   spin_energy(i, p_.omega.empty() ? T(0) : p_.omega[i]);
       total_ += energy_[i];
       species_sum_[std::size_t(p_.species[i])] += energy_[i];
     }

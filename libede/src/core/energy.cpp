@@ -4,6 +4,28 @@
 #include "core/energy.hpp"
 
 namespace ede {
+namespace {
+// The sum of I w^2 / 2 (0 for smooth disks, whose omega is empty).
+template <class T>
+long double rotational_sum(const Particles<T>& p) {
+  long double sum = 0;
+  for (std::size_t i = 0; i < p.omega.size(); ++i) {
+    const long double w = p.omega[i];
+    sum += 0.5L * (long double)p.inertia[i] * (w * w);
+  }
+  return sum;
+}
+}  // namespace
+template <class T>
+double rotational_energy(const Particles<T>& p) {
+  return double(rotational_sum(p));
+}
+template double rotational_energy<float>(const Particles<float>&);
+template double rotational_energy<double>(const Particles<double>&);
+template double rotational_energy<long double>(const Particles<long double>&);
+#if EDE_HAVE_FLOAT128
+template double rotational_energy<__float128>(const Particles<__float128>&);
+#endif
 
 template <class T>
 double kinetic_energy(const Particles<T>& p) {
@@ -12,7 +34,7 @@ double kinetic_energy(const Particles<T>& p) {
     const long double vx = p.disk[i].vx, vy = p.disk[i].vy;
     sum += 0.5L * (long double)p.mass[i] * (vx * vx + vy * vy);
   }
-  return double(sum);
+  return double(sum + rotational_sum(p));  // + 0 exactly for smooth disks
 }
 
 template <class T>
@@ -33,7 +55,7 @@ double kinetic_energy(const Particles<T>& p, T t) {
     const long double vx = p.vx_at(i, t), vy = p.vy_at(i, t);
     sum += 0.5L * (long double)p.mass[i] * (vx * vx + vy * vy);
   }
-  return double(sum);
+  return double(sum + rotational_sum(p));
 }
 
 template <class T>

@@ -22,6 +22,7 @@ struct EventOutcome {
   T vjx{}, vjy{};           // Pair: post-event velocity of j
   T vix0{}, viy0{};         // Pair, Wall: velocity of i before the event (the log codes against it)
   T vjx0{}, vjy0{};         // Pair: velocity of j before the event
+  T wi{}, wj{};             // rough engines, Pair and Wall: angular velocity of i (and j) after the event
 };
 
 }  // namespace ede

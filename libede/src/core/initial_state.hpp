@@ -15,6 +15,9 @@ struct InitialState {
   std::vector<double> x, y, vx, vy, radius, mass;
   std::vector<std::int32_t> species;      // index into species_names
   std::vector<std::string> species_names;
+  // Rough or spinning disks only (Scene::rotates; else both empty): angular velocity and moment of inertia
+  // per disk. An engine that needs them and finds them empty takes omega = 0 and I = m r^2 / 2.
+  std::vector<double> omega, inertia;
   std::string note;  // what setup did beyond the scene's words (growth: the packing fraction reached), or empty
 
   std::size_t size() const { return x.size(); }

@@ -37,6 +37,9 @@ struct Particles {
   std::vector<T> mass;
   std::vector<std::int32_t> species;
   std::vector<T> last_collision;  // TC model only (else empty): time of each disk's last collision
+  // Rough engines only (else empty): angular velocity (counter-clockwise positive) and moment of inertia.
+  // Cold like mass: read only at collisions, so they stay out of the 64-byte hot record.
+  std::vector<T> omega, inertia;
   T gx{}, gy{};                   // the constant gravity the disks fall under between events (usually 0)
 
   std::size_t size() const { return disk.size(); }

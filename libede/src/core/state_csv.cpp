@@ -30,8 +30,9 @@ void put(std::FILE* out, __float128 v) {
 
 template <class C>
 void write_rows(std::FILE* out, const State& s) {
-  const std::vector<C>* cols[] = {&s.x.values<C>(), &s.y.values<C>(), &s.vx.values<C>(), &s.vy.values<C>(),
-                                  &s.radius.values<C>(), &s.mass.values<C>()};
+  std::vector<const std::vector<C>*> cols = {&s.x.values<C>(),  &s.y.values<C>(),      &s.vx.values<C>(),
+                                             &s.vy.values<C>(), &s.radius.values<C>(), &s.mass.values<C>()};
+  if (s.rotates()) cols.insert(cols.end(), {&s.omega.values<C>(), &s.inertia.values<C>()});
   for (std::size_t i = 0; i < s.size(); ++i) {
     const std::int32_t sp = s.species[i];
     std::fprintf(out, "%zu,", i);
@@ -57,7 +58,7 @@ Status close_checked(std::FILE* out, const std::string& path) {
 }  // namespace
 
 void write_state_csv(std::FILE* out, const State& s) {
-  std::fputs("id,species,x,y,vx,vy,radius,mass\n", out);
+  std::fputs(s.rotates() ? "id,species,x,y,vx,vy,radius,mass,omega,inertia\n" : "id,species,x,y,vx,vy,radius,mass\n", out);
   switch (s.x.scalar()) {
     case ScalarKind::Float: return write_rows<float>(out, s);
     case ScalarKind::Double: return write_rows<double>(out, s);
@@ -74,7 +75,7 @@ Status write_state_csv(const std::string& path, const State& s) {
 
 template <class T>
 void write_state_csv(std::FILE* out, const Particles<T>& p, T time, const std::vector<std::string>& species_names) {
-  std::fputs("id,species,x,y,vx,vy,radius,mass\n", out);
+  std::fputs(p.omega.empty() ? "id,species,x,y,vx,vy,radius,mass\n" : "id,species,x,y,vx,vy,radius,mass,omega,inertia\n", out);
   for (std::size_t i = 0; i < p.size(); ++i) {
     const Disk<T>& d = p.disk[i];
     const std::int32_t s = p.species[i];
@@ -87,6 +88,11 @@ void write_state_csv(std::FILE* out, const Particles<T>& p, T time, const std::v
       std::fputc(',', out);
       put(out, v);
     }
+    if (!p.omega.empty())
+      for (T v : {p.omega[i], p.inertia[i]}) {
+        std::fputc(',', out);
+        put(out, v);
+      }
     std::fputc('\n', out);
   }
 }

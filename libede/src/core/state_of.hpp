@@ -48,6 +48,11 @@ State state_of(const Particles<T>& p, T time, std::uint64_t events, double lx, d
   s.vy = Column(std::move(vy)), s.radius = Column(std::move(r)), s.mass = Column(std::move(m));
   s.species = p.species;
   s.species_names = species_names;
+  if (!p.omega.empty()) {
+    std::vector<C> w(n), inertia(n);
+    for (std::size_t i = 0; i < n; ++i) w[i] = C(p.omega[i]), inertia[i] = C(p.inertia[i]);
+    s.omega = Column(std::move(w)), s.inertia = Column(std::move(inertia));
+  }
   return s;
 }
 

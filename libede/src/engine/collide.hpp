@@ -18,6 +18,24 @@
 // normal (exact reflection angles, no measured direction); at an end point, n = (E - x) / |E - x| with
 // the measured distance, computed as collide_pair computes it, so an end point is bit for bit a disk of
 // mass 2^60 times the disk's at rest there.
+// Rough disks (Smooth/Rough, effects.hpp): the standard rough-sphere rule in 2D, as in S. Luding,
+// M. Huthmann, S. McNamara, A. Zippelius, "Homogeneous cooling of rough, dissipative particles: theory and
+// simulations", Phys. Rev. E 58, 3416 (1998), eqs. (1)-(4), with omega a scalar (counter-clockwise). With
+// n the unit normal from i to j and t = (-n_y, n_x), disk i's contact point moves at v_i + r_i w_i t and
+// j's at v_j - r_j w_j t, so the relative contact velocity (j against i) has the tangential part
+//   g_t = (v_j - v_i).t - (r_i w_i + r_j w_j).
+// The rule reverses and scales it by beta: g_t' = -beta g_t (beta = -1 smooth, +1 perfectly rough), by a
+// tangential impulse P_t t on i (-P_t t on j), whose torque is r_i P_t on i and r_j P_t on j:
+//   P_t = (1 + beta) g_t / K,   K = 1/m_i + 1/m_j + r_i^2/I_i + r_j^2/I_j,
+//   v_i' = v_i + (P_t/m_i) t,  v_j' = v_j - (P_t/m_j) t,  w_i' = w_i + r_i P_t/I_i,  w_j' = w_j + r_j P_t/I_j,
+// after the normal impulse of collide_pair (unchanged, xi as for smooth disks). g_t is taken before the
+// collision (the normal impulse does not change it). With I = q m r^2 and equal disks this is Luding's
+// eta_t = q (1 + beta) / (2 (1 + q)). Energy: with xi = 1 and beta = +-1 nothing is lost; otherwise the
+// loss is (1 - xi^2) mu g_n^2 / 2 + (1 - beta^2) g_t^2 / (2 K). beta = -1 skips the tangential part, so a
+// smooth pair in a rough engine computes bit for bit what collide_pair does.
+// A box wall is a partner of infinite mass and inertia at rest: g_t = -v.t - r w, K = 1/m + r^2/I, with n
+// the wall's outward normal; it acts after the course's wall rule (which scales the tangential velocity
+// by xi_w too), so beta_w = -1 leaves that rule exactly as it is.
 #pragma once
 
 #include "core/scalar_math.hpp"
@@ -39,6 +57,40 @@ inline void collide_pair(T dx, T dy, T mi, T mj, T one_plus_xi, T& vix, T& viy, 
   viy = viy + ki * ny;
   vjx = vjx - kj * nx;
   vjy = vjy - kj * ny;
+}
+
+// The tangential impulse of a rough pair (the rule above), applied after collide_pair. (nx, ny) is the
+// normal from i to j, measured as collide_pair measures it; dv = v_j - v_i and the spins are pre-collision.
+template <class T>
+inline void collide_pair_tangential(T dx, T dy, T dvx, T dvy, T mi, T mj, T ri, T rj, T inertia_i, T inertia_j,
+                                    T one_plus_beta, T& vix, T& viy, T& vjx, T& vjy, T& wi, T& wj) {
+  if (one_plus_beta == T(0)) return;  // smooth: nothing changes, not even the sign of a zero
+  const T dist = ede::sqrt(dx * dx + dy * dy);
+  const T tx = -(dy / dist), ty = dx / dist;
+  const T gt = (dvx * tx + dvy * ty) - (ri * wi + rj * wj);
+  const T k = ((T(1) / mi + T(1) / mj) + ri * ri / inertia_i) + rj * rj / inertia_j;
+  const T pt = one_plus_beta * gt / k;
+  vix = vix + (pt / mi) * tx;
+  viy = viy + (pt / mi) * ty;
+  vjx = vjx - (pt / mj) * tx;
+  vjy = vjy - (pt / mj) * ty;
+  wi = wi + ri * pt / inertia_i;
+  wj = wj + rj * pt / inertia_j;
+}
+
+// The tangential impulse of a rough wall: (nx, ny) the wall's outward unit normal (from the disk to the
+// wall), (vx0, vy0) the velocity before the collision; applied after the wall's own rule.
+template <class T>
+inline void collide_wall_tangential(T nx, T ny, T vx0, T vy0, T m, T r, T inertia, T one_plus_beta, T& vx, T& vy,
+                                    T& w) {
+  if (one_plus_beta == T(0)) return;
+  const T tx = -ny, ty = nx;
+  const T gt = (T(0) - (vx0 * tx + vy0 * ty)) - r * w;
+  const T k = T(1) / m + r * r / inertia;
+  const T pt = one_plus_beta * gt / k;
+  vx = vx + (pt / m) * tx;
+  vy = vy + (pt / m) * ty;
+  w = w + r * pt / inertia;
 }
 
 // Wall collisions: `vertical` walls are x = 0 and x = Lx.

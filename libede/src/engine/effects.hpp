@@ -59,6 +59,18 @@ struct WithSegments {
   static constexpr bool kSegments = true;
 };
 
+// Rough disks (collide.hpp, docs/physics.md): each disk carries an angular velocity omega and a moment of
+// inertia, and a collision reverses and scales the contact points' tangential relative velocity by beta
+// besides the normal one by xi. Smooth (every scene before rotation existed) compiles none of it: no omega
+// array, no tangential impulse. Rough engines are Dissipative (a beta between -1 and 1 loses energy, and
+// the energy kept for stop.energy_fraction includes the rotation).
+struct Smooth {
+  static constexpr bool kRough = false;
+};
+struct Rough {
+  static constexpr bool kRough = true;
+};
+
 // The pair contact-time root: a function, not a flag. The library's engines use the stable form of
 // geometry.hpp; study/ adds a textbook one (for the accuracy study) without touching the engine.
 struct StableContact {

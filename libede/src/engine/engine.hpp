@@ -44,10 +44,14 @@ struct EngineOptions {
   // Give up (RunStatus::Stalled) after this many consecutive events at one and the same time
   // (0: max(10^6, 100 N)).
   std::uint64_t stall_limit = 0;
+  // The disks carry omega (Scene::rotates: some beta > -1 or some species spins): a rough engine runs.
+  bool rotation = false;
 };
 
 // The TC model is on when a scene dissipates and sets tc > 0 (an elastic scene's tc changes nothing).
 inline bool uses_tc_model(const PhysicsSpec& ph) { return ph.tc > 0 && !ph.elastic(); }
+// A run needs a rough engine: the disks spin, or some contact is rough.
+inline bool uses_rotation(const EngineOptions& o) { return o.rotation || o.physics.rough(); }
 
 // The engine options a scene asks for; `disks` sizes the automatic rebuild interval.
 EngineOptions engine_options_from(const Scene& scene, std::size_t disks);
@@ -64,6 +68,7 @@ struct ResumePoint {
   T time{};
   std::vector<Disk<T>> disks;     // x, y, vx, vy, t and last_partner are used
   std::vector<T> last_collision;  // TC model only
+  std::vector<T> omega;           // rough engines: each disk's angular velocity (empty: as the initial state)
   EventCounts counts;
   std::uint64_t next_sample_index = 0;
   std::uint64_t next_action_index = 0;
@@ -107,6 +112,8 @@ enum class EngineKind {
   WallsDissipative,     // restitution below 1 (pairs or walls) and/or the TC model, walled box
   WallsGravity,         // gravity, elastic or not (walls only); computes any walled run without segments
   WallsSegments,        // wall segments inside a walled box, elastic or not, without gravity
+  PeriodicRough,        // rough or spinning disks (omega, I, beta), periodic box
+  WallsRough,           // rough or spinning disks, walled box (no gravity, no segments)
 };
 const char* to_string(EngineKind kind);  // "walls, dissipative", ...
 // The engine a run needs: the one with the fewest effects compiled in that computes it.

@@ -44,6 +44,16 @@ Status check_engine_input(const InitialState& init, const EngineOptions& options
         return Error{"a pair restitution names species '" + name + "', which the initial state does not have"};
   }
   if (!in_range) return Error{"restitution coefficients must lie in [0, 1]"};
+  bool beta_in_range = ph.roughness >= -1 && ph.roughness <= 1 && ph.wall_roughness >= -1 && ph.wall_roughness <= 1;
+  for (const PairRestitution& p : ph.pairs) beta_in_range = beta_in_range && ph.pair_roughness(p) >= -1 && ph.pair_roughness(p) <= 1;
+  if (!beta_in_range) return Error{"roughness coefficients (beta) must lie in [-1, 1]"};
+  if (uses_rotation(options) && (ph.has_gravity() || !ph.segments.empty()))
+    return Error{"rough or spinning disks under gravity or with wall segments are not supported yet; make them smooth"};
+  if ((!init.omega.empty() && init.omega.size() != n) || (!init.inertia.empty() && init.inertia.size() != n))
+    return Error{"the initial state's angular velocities or moments of inertia do not match its disk count"};
+  for (std::size_t i = 0; i < init.omega.size(); ++i)
+    if (!finite(init.omega[i]) || (i < init.inertia.size() && !(init.inertia[i] > 0 && finite(init.inertia[i]))))
+      return Error{"disk " + std::to_string(i) + " has a non-finite angular velocity or a non-positive moment of inertia"};
   if (!std::isfinite(ph.gravity[0]) || !std::isfinite(ph.gravity[1])) return Error{"gravity must be finite"};
   if (ph.has_gravity() && options.boundary == BoundaryKind::Periodic)
     return Error{"gravity needs walls: in a periodic box every disk would fall forever"};

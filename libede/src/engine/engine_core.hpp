@@ -52,9 +52,12 @@ GridShape grid_shape_for(double lx, double ly, double max_radius, std::size_t di
 GridShape engine_grid_for(const InitialState& init, bool periodic, Algorithm algorithm);
 
 template <class T, class Boundary, class Dissipation, class Field = NoField, class Contact = StableContact,
-          class Walls = NoSegments>
+          class Walls = NoSegments, class Spin = Smooth>
 class Engine final : public EngineApi<T> {
   static constexpr bool kSegments = Walls::kSegments;
+  static constexpr bool kRough = Spin::kRough;
+  static_assert(!kRough || (Dissipation::kDissipative && !Field::kGravity && !kSegments),
+                "rough disks run in a dissipative engine without gravity or segments");
   static_assert(!kSegments || (!Boundary::kPeriodic && !Field::kGravity), "segments need walls and no gravity");
   static constexpr bool kPeriodic = Boundary::kPeriodic;
   static constexpr bool kDissipative = Dissipation::kDissipative;
@@ -81,6 +84,7 @@ class Engine final : public EngineApi<T> {
     half_ly_ = ly_ / 2;
     tc_ = T(options.physics.tc);
     if constexpr (kDissipative) setup_restitution(init.species_names, options.physics);
+    if constexpr (kRough) setup_roughness(init.species_names, options.physics);
     if constexpr (kGravity) {
       gx_ = p_.gx = T(options.physics.gravity[0]);
       gy_ = p_.gy = T(options.physics.gravity[1]);
@@ -121,6 +125,11 @@ class Engine final : public EngineApi<T> {
     }
     if constexpr (kGravity) s << ", gravity (" << opt_.physics.gravity[0] << ", " << opt_.physics.gravity[1] << ")";
     if constexpr (kSegments) s << ", " << seg_.size() << (seg_.size() == 1 ? " segment" : " segments");
+    if constexpr (kRough) {
+      s << ", rough (beta=" << opt_.physics.roughness << ", beta_w=" << opt_.physics.wall_roughness;
+      if (!opt_.physics.pairs.empty()) s << ", per species pair";
+      s << ")";
+    }
     s << Contact::kLabel;
     s << ", grid " << grid_.nx() << "x" << grid_.ny();
     if (!big_.empty()) s << " + " << big_.size() << (big_.size() == 1 ? " big disk" : " big disks");
@@ -131,7 +140,8 @@ class Engine final : public EngineApi<T> {
     return p_.disk.capacity() * sizeof(Disk<T>) + p_.mass.capacity() * sizeof(T) +
            p_.species.capacity() * sizeof(std::int32_t) + p_.last_collision.capacity() * sizeof(T) +
            pred_.capacity() * sizeof(Prediction) + grid_.memory_bytes() + queue_.memory_bytes() +
-           big_.capacity() * sizeof(BigDisk) + seg_.capacity() * sizeof(Segment<T>) + seg_cells_.memory_bytes();
+           big_.capacity() * sizeof(BigDisk) + seg_.capacity() * sizeof(Segment<T>) + seg_cells_.memory_bytes() +
+           (p_.omega.capacity() + p_.inertia.capacity() + beta_table_.capacity()) * sizeof(T);
   }
 
   RunStatus run(std::uint64_t max_events) override { return run_until(kNever<T>, max_events); }
@@ -248,6 +258,7 @@ class Engine final : public EngineApi<T> {
                            -1, 0, -1, -1};
       p_.mass[i] = T(init.mass[i]);
     }
+    if constexpr (kRough) load_spins(init);
     ke0_ = kinetic_energy(p_);
     ke_ = ke0_;
     if (opt_.stop.time) stop_time_ = T(*opt_.stop.time);
@@ -263,6 +274,8 @@ class Engine final : public EngineApi<T> {
       d.last_partner = from.last_partner;
     }
     if (tc_model()) p_.last_collision = r.last_collision;
+    if constexpr (kRough)
+      if (!r.omega.empty()) p_.omega = r.omega;
     now_ = r.time;
     counts_ = r.counts;
     next_sample_index_ = r.next_sample_index;
@@ -639,6 +652,10 @@ class Engine final : public EngineApi<T> {
     if constexpr (kDissipative) {
       const double ke_before = pair_energy(i, j);
       collide_pair(dx, dy, p_.mass[i], p_.mass[j], by_tc ? T(2) : pair_one_plus_xi(i, j), a.vx, a.vy, b.vx, b.vy);
+      if constexpr (kRough)
+        collide_pair_tangential(dx, dy, vjx0 - vix0, vjy0 - viy0, p_.mass[i], p_.mass[j], a.r, b.r, p_.inertia[i],
+                                p_.inertia[j], by_tc ? T(0) : pair_one_plus_beta(i, j), a.vx, a.vy, b.vx, b.vy,
+                                p_.omega[i], p_.omega[j]);
       ke_ += pair_energy(i, j) - ke_before;
       note_if_too_slow(i);
       note_if_too_slow(j);
@@ -652,7 +669,11 @@ class Engine final : public EngineApi<T> {
     b.last_partner = i;
     ++counts_.by_kind[int(EventKind::Pair)];
     if (by_tc) ++counts_.tc_elastic;
-    if (!sinks_.empty()) emit({now_, EventKind::Pair, by_tc, i, j, a.vx, a.vy, b.vx, b.vy, vix0, viy0, vjx0, vjy0});
+    if (!sinks_.empty()) {
+      EventOutcome<T> o{now_, EventKind::Pair, by_tc, i, j, a.vx, a.vy, b.vx, b.vy, vix0, viy0, vjx0, vjy0};
+      if constexpr (kRough) o.wi = p_.omega[i], o.wj = p_.omega[j];
+      emit(o);
+    }
     predict(i);
     predict(j);
   }
@@ -669,6 +690,10 @@ class Engine final : public EngineApi<T> {
         collide_wall_elastic(vertical, d.vx, d.vy);
       else
         collide_wall(vertical, xi_wall_[wall], d.vx, d.vy);
+      if constexpr (kRough)
+        if (!by_tc)
+          collide_wall_tangential(kWallNormal[wall][0], kWallNormal[wall][1], vx0, vy0, p_.mass[i], d.r,
+                                  p_.inertia[i], wall_one_plus_beta_, d.vx, d.vy, p_.omega[i]);
       ke_ += disk_energy(i) - ke_before;
       note_if_too_slow(i);
       if (tc_model()) p_.last_collision[i] = now_;
@@ -679,7 +704,11 @@ class Engine final : public EngineApi<T> {
     d.last_partner = -1;
     ++counts_.by_kind[int(EventKind::Wall)];
     if (by_tc) ++counts_.tc_elastic;
-    if (!sinks_.empty()) emit({now_, EventKind::Wall, by_tc, i, wall, d.vx, d.vy, T(0), T(0), vx0, vy0, T(0), T(0)});
+    if (!sinks_.empty()) {
+      EventOutcome<T> o{now_, EventKind::Wall, by_tc, i, wall, d.vx, d.vy, T(0), T(0), vx0, vy0, T(0), T(0)};
+      if constexpr (kRough) o.wi = p_.omega[i];
+      emit(o);
+    }
     predict(i);
   }
 
@@ -779,6 +808,8 @@ class Engine final : public EngineApi<T> {
       ++p_.disk[i].counter;
       p_.disk[i].last_partner = -1;
     }
+    if constexpr (kRough)
+      for (T& w : p_.omega) w = -w;  // the reversed motion spins the other way
     ++counts_.by_kind[int(EventKind::Action)];
     if (!sinks_.empty()) emit({now_, EventKind::Action, false, -1, -1, T(0), T(0), T(0), T(0), T(0), T(0), T(0), T(0)});
     rebuild();
@@ -910,7 +941,43 @@ class Engine final : public EngineApi<T> {
 
   double disk_energy(std::int32_t i) const {
     const double vx = double(p_.disk[i].vx), vy = double(p_.disk[i].vy);
+    if constexpr (kRough) {
+      const double w = double(p_.omega[i]);
+      return 0.5 * double(p_.mass[i]) * (vx * vx + vy * vy) + 0.5 * double(p_.inertia[i]) * (w * w);
+    }
     return 0.5 * double(p_.mass[i]) * (vx * vx + vy * vy);
+  }
+
+  // Rough disks: omega and I from the initial state, or omega = 0 and I = m r^2 / 2 (a uniform disk) where
+  // it has none (a state built in code, or a start from a smooth run's log).
+  void load_spins(const InitialState& init) {
+    const std::size_t n = init.size();
+    p_.omega.assign(n, T(0));
+    p_.inertia.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      p_.inertia[i] = T(0.5) * p_.mass[i] * p_.disk[i].r * p_.disk[i].r;
+      if (init.omega.size() == n) p_.omega[i] = T(init.omega[i]);
+      if (init.inertia.size() == n) p_.inertia[i] = T(init.inertia[i]);
+    }
+  }
+
+  // 1 + beta per pair of species (physics.roughness, physics.pairs[].roughness) and for the box walls.
+  void setup_roughness(const std::vector<std::string>& names, const PhysicsSpec& ph) {
+    const std::size_t n = std::max<std::size_t>(names.size(), 1);
+    beta_table_.assign(n * n, T(1) + T(ph.roughness));
+    const auto index_of = [&](const std::string& name) {
+      return std::size_t(std::find(names.begin(), names.end(), name) - names.begin());
+    };
+    for (const PairRestitution& pr : ph.pairs) {
+      const std::size_t a = index_of(pr.a), b = index_of(pr.b);
+      beta_table_[a * n + b] = beta_table_[b * n + a] = T(1) + T(ph.pair_roughness(pr));
+    }
+    wall_one_plus_beta_ = T(1) + T(ph.wall_roughness);
+  }
+
+  T pair_one_plus_beta(std::int32_t i, std::int32_t j) const {
+    if (beta_table_.size() == 1) return beta_table_[0];
+    return beta_table_[std::size_t(p_.species[i]) * species_count_ + std::size_t(p_.species[j])];
   }
   double pair_energy(std::int32_t i, std::int32_t j) const { return disk_energy(i) + disk_energy(j); }
 
@@ -929,6 +996,10 @@ class Engine final : public EngineApi<T> {
   std::vector<T> pair_table_;  // 1 + xi for species (a, b) at a * species_count_ + b
   std::size_t species_count_ = 1;
   bool uniform_pairs_ = true;
+  std::vector<T> beta_table_;       // rough only: 1 + beta for species (a, b) at a * species_count_ + b
+  T wall_one_plus_beta_ = 0;        // rough only: 1 + beta_w of the box walls
+  // The outward normal of each box wall (from a disk to the wall), by WallId.
+  static constexpr T kWallNormal[4][2] = {{T(-1), T(0)}, {T(1), T(0)}, {T(0), T(-1)}, {T(0), T(1)}};
   T gx_ = 0, gy_ = 0;          // gravity (UniformGravity only)
   std::vector<BigDisk> big_;   // disks outside the cell lists (big_disks.hpp), by id
   std::vector<Segment<T>> seg_;  // wall segments (WithSegments only), in the scene's order

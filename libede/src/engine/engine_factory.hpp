@@ -7,10 +7,13 @@
 //   WallsDissipative     walls     Dissipative  NoField         restitution < 1 (pairs or walls) and/or TC, walls
 //   WallsGravity         walls     Dissipative  UniformGravity  every scene with gravity, elastic ones too
 //   WallsSegments        walls     Dissipative  NoField         every scene with wall segments (WithSegments)
+//   PeriodicRough        periodic  Dissipative  NoField         rough or spinning disks (Rough), periodic box
+//   WallsRough           walls     Dissipative  NoField         rough or spinning disks (Rough), walled box
 //
-// Six per scalar type: make_engine_as<T> below names them all, and engine_float.cpp, engine_double.cpp,
+// Eight per scalar type: make_engine_as<T> below names them all, and engine_float.cpp, engine_double.cpp,
 // engine_long_double.cpp (and engine_float128.cpp where EDE_HAVE_FLOAT128) instantiate it once each, so
-// 24 engines (18 without __float128). Why not fewer: the elastic gas is what the speed targets are about,
+// 32 engines (24 without __float128). The two rough ones carry omega and the tangential impulse; every
+// other scene's engine has neither compiled in. Why not fewer: the elastic gas is what the speed targets are about,
 // and it must not pay for restitution, energy accounting or TC (Elastic), for walls in a periodic box
 // (Boundary) or for parabolas (Field). Why not more: within Dissipative, restitution, per-pair restitution
 // and TC cost nothing measurable (ede-bench effects: 0.98-1.00 x the elastic gas per event), so they are
@@ -63,6 +66,14 @@ Result<std::unique_ptr<EngineApi<T>>> make_engine_as(EngineKind kind, const Init
     case EngineKind::WallsSegments:
       e = std::make_unique<Engine<T, WallsBoundary, Dissipative, NoField, StableContact, WithSegments>>(init, o, shape,
                                                                                                      resume);
+      break;
+    case EngineKind::PeriodicRough:
+      e = std::make_unique<Engine<T, PeriodicBoundary, Dissipative, NoField, StableContact, NoSegments, Rough>>(
+          init, o, shape, resume);
+      break;
+    case EngineKind::WallsRough:
+      e = std::make_unique<Engine<T, WallsBoundary, Dissipative, NoField, StableContact, NoSegments, Rough>>(
+          init, o, shape, resume);
       break;
   }
   return e;

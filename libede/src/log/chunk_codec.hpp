@@ -20,6 +20,8 @@
 //   residuals   varint zigzag(key(v) - key(prediction)): pair v_i'x, v_i'y, v_j'x, v_j'y against the
 //               collision rule; wall v'x, v'y against the wall's rule; segment v'x, v'y against the
 //               segment's rule (and in encoding 1 against the velocity before the event)
+// Rough runs (the state has omega) add one column, spins: varint zigzag(key(w) - key(prediction)) of
+// pair w_i', w_j' and wall w' against the rough rule (FORMAT.md, "Rotation"); other runs have it empty.
 // Segment events (kind 6) take the disk in `disks` and the segment's index in `partners`, like a wall.
 // Both are lossless whatever the predictions' quality: a residual of 0 costs one byte, a bad prediction a
 // few more. Rejected for encoding 2: keeping v_i' raw (60 % of a version 1 log) and the momentum
@@ -85,6 +87,7 @@ inline T predicted_event_time(const EventPhysics<T>& ph, const Particles<T>& s, 
 // The raw columns of one chunk, as the encoder fills them and the schema stores them.
 struct ChunkColumns {
   std::vector<unsigned char> times, kinds, disks, partners, raw, residuals;  // raw: already shuffled
+  std::vector<unsigned char> spins;  // rough runs only
 };
 
 template <class T>
@@ -99,6 +102,7 @@ class ChunkEncoder {
     count_ = 0;
     previous_key_ = 0;
     times_.clear(), kinds_.clear(), disks_.clear(), partners_.clear(), raw_.clear(), residuals_.clear();
+    spins_.clear();
   }
 
   // `before`: the state just before the event, as replay has it (encoding 2 only).
@@ -119,7 +123,7 @@ class ChunkEncoder {
 
   ChunkColumns columns() const {
     return {times_.bytes(), kinds_.bytes(), disks_.bytes(), partners_.bytes(),
-            shuffle_bytes(raw_.bytes(), kScalarWidth<T>), residuals_.bytes()};
+            shuffle_bytes(raw_.bytes(), kScalarWidth<T>), residuals_.bytes(), spins_.bytes()};
   }
 
  private:
@@ -153,17 +157,19 @@ class ChunkEncoder {
       add_ids(e);
     add_time_v2(e.time, predicted_event_time(physics_, s, e.kind, e.i, e.j));
     if (e.kind == EventKind::Pair) {
-      T v[4];
-      predict_pair_velocities(physics_, s, e.i, e.j, e.time, tc, v);
+      T v[4], w[2];
+      predict_pair_velocities(physics_, s, e.i, e.j, e.time, tc, v, w);
       residuals_.varint(residual(e.vix, v[0]));
       residuals_.varint(residual(e.viy, v[1]));
       residuals_.varint(residual(e.vjx, v[2]));
       residuals_.varint(residual(e.vjy, v[3]));
+      if (!s.omega.empty()) spins_.varint(residual(e.wi, w[0])), spins_.varint(residual(e.wj, w[1]));
     } else if (e.kind == EventKind::Wall) {
-      T v[2];
-      predict_wall_velocity(physics_, s, e.i, e.j, e.time, tc, v);
+      T v[2], w[1];
+      predict_wall_velocity(physics_, s, e.i, e.j, e.time, tc, v, w);
       residuals_.varint(residual(e.vix, v[0]));
       residuals_.varint(residual(e.viy, v[1]));
+      if (!s.omega.empty()) spins_.varint(residual(e.wi, w[0]));
     } else if (e.kind == EventKind::Segment) {
       T v[2];
       predict_segment_velocity(physics_, s, e.i, e.j, e.time, tc, v);
@@ -238,7 +244,7 @@ class ChunkEncoder {
   std::uint32_t count_ = 0;
   u128 previous_key_ = 0;
   T time_first_{}, time_last_{};
-  ByteWriter times_, kinds_, disks_, partners_, raw_, residuals_;
+  ByteWriter times_, kinds_, disks_, partners_, raw_, residuals_, spins_;
 };
 
 // One decoded event, as tools list them.
@@ -254,6 +260,7 @@ struct DecodedEvent {
   // reused by apply_event instead of advancing the records a second time (same function, same bits).
   bool advanced = false;
   T xi{}, yi{}, xj{}, yj{};
+  T wi{}, wj{};  // rough logs, pair and wall: the spins after the event
 };
 
 // Decodes a chunk one event at a time against a replayed state: the next event's fields need the state
@@ -264,7 +271,8 @@ struct DecodedEvent {
 template <class T>
 class ChunkDecoder {
  public:
-  enum Column { kTimes = 0, kKinds, kDisks, kPartners, kRaw, kResiduals, kColumnCount };
+  // kSpins: rough logs only (else empty); appended so the other columns keep their places.
+  enum Column { kTimes = 0, kKinds, kDisks, kPartners, kRaw, kResiduals, kSpins, kColumnCount };
 
   // `physics`: encoding 2's predictions (copied: small).
   ChunkDecoder(MessageWords storage, const unsigned char* const* cols, const std::size_t* sizes,
@@ -290,6 +298,7 @@ class ChunkDecoder {
   [[gnu::always_inline]] inline bool read_disk(ByteReader& r, std::int32_t& out);
   bool read_scalar(T& out);
   [[gnu::always_inline]] inline bool read_residual(T predicted, T& out);
+  bool read_spin(T predicted, T& out);
   bool read_time(T& out);
   template <class Predict>
   [[gnu::always_inline]] inline bool read_time_v2(const Predict& predict, T& out);
@@ -301,7 +310,7 @@ class ChunkDecoder {
   [[gnu::always_inline]] inline bool read_v2(const Particles<T>& state, DecodedEvent<T>& e);
 
   MessageWords storage_;
-  ByteReader times_, kinds_, disks_, partners_, residuals_;
+  ByteReader times_, kinds_, disks_, partners_, residuals_, spins_;
   const unsigned char* raw_shuffled_;
   std::size_t raw_size_;
   std::vector<unsigned char> raw_;
@@ -353,6 +362,7 @@ template <class T>
         advance_disk(b, e.time, p.gx, p.gy);
       }
       a.vx = e.vix, a.vy = e.viy, b.vx = e.vjx, b.vy = e.vjy;
+      if (!p.omega.empty()) p.omega[std::size_t(e.i)] = e.wi, p.omega[std::size_t(e.j)] = e.wj;
       return finite_record(a) && finite_record(b);
     }
     case EventKind::Wall:
@@ -360,6 +370,7 @@ template <class T>
       Disk<T>& a = p.disk[std::size_t(e.i)];
       advance_disk(a, e.time, p.gx, p.gy);
       a.vx = e.vix, a.vy = e.viy;
+      if (!p.omega.empty() && e.kind == EventKind::Wall) p.omega[std::size_t(e.i)] = e.wi;
       return finite_record(a);
     }
     case EventKind::Wrap: {
@@ -373,6 +384,7 @@ template <class T>
         reverse_disk(d, e.time, p.gx, p.gy);
         ok = ok && finite_record(d);
       }
+      for (T& w : p.omega) w = -w;  // rough logs: Engine::reverse_velocities
       return ok;
     }
     default: return true;

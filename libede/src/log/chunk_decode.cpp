@@ -16,6 +16,7 @@ ChunkDecoder<T>::ChunkDecoder(MessageWords storage, const unsigned char* const* 
       disks_(cols[kDisks], sizes[kDisks]),
       partners_(cols[kPartners], sizes[kPartners]),
       residuals_(cols[kResiduals], sizes[kResiduals]),
+      spins_(cols[kSpins], sizes[kSpins]),
       raw_shuffled_(cols[kRaw]),
       raw_size_(sizes[kRaw]),
       first_event_(first_event),
@@ -74,6 +75,16 @@ bool ChunkDecoder<T>::read_residual(T predicted, T& out) {
   if (!residuals_.varint(r)) return fail("the residual column is cut short");
   out = apply_residual(r, predicted);
   if (!std::isfinite(double(out))) return fail("a decoded velocity is not finite");
+  return true;
+}
+
+// Rough logs: a spin after a pair or wall event, against the rough rule's prediction.
+template <class T>
+bool ChunkDecoder<T>::read_spin(T predicted, T& out) {
+  u128 r;
+  if (!spins_.varint(r)) return fail("the spin column is cut short");
+  out = apply_residual(r, predicted);
+  if (!std::isfinite(double(out))) return fail("a decoded angular velocity is not finite");
   return true;
 }
 
@@ -214,16 +225,16 @@ bool ChunkDecoder<T>::read_v2(const Particles<T>& p, DecodedEvent<T>& e) {
     advance_disk(b, e.time, gx, gy);
     e.advanced = true;
     e.xi = a.x, e.yi = a.y, e.xj = b.x, e.yj = b.y;
-    T v[4];
-    predict_pair_velocities(physics_, p, e.i, e.j, a, b, e.tc_elastic, v);
+    T v[4], w[2];
+    predict_pair_velocities(physics_, p, e.i, e.j, a, b, e.tc_elastic, v, w);
     return read_residual(v[0], e.vix) && read_residual(v[1], e.viy) && read_residual(v[2], e.vjx) &&
-           read_residual(v[3], e.vjy);
+           read_residual(v[3], e.vjy) && (p.omega.empty() || (read_spin(w[0], e.wi) && read_spin(w[1], e.wj)));
   }
   if (!read_time_v2([&] { return predicted_event_time(physics_, p, e.kind, e.i, e.j); }, e.time)) return false;
   if (e.kind == EventKind::Wall) {
-    T v[2];
-    predict_wall_velocity(physics_, p, e.i, e.j, e.time, e.tc_elastic, v);
-    return read_residual(v[0], e.vix) && read_residual(v[1], e.viy);
+    T v[2], w[1];
+    predict_wall_velocity(physics_, p, e.i, e.j, e.time, e.tc_elastic, v, w);
+    return read_residual(v[0], e.vix) && read_residual(v[1], e.viy) && (p.omega.empty() || read_spin(w[0], e.wi));
   }
   if (e.kind == EventKind::Segment) {
     T v[2];
@@ -241,6 +252,7 @@ bool ChunkDecoder<T>::decode(const Particles<T>& state, DecodedEvent<T>& e) {
   e.advanced = false;
   e.i = e.j = -1;
   e.vix = e.viy = e.vjx = e.vjy = T(0);  // a wall, wrap or action event leaves some of them unset
+  e.wi = e.wj = T(0);
   const bool ok = encoding_ < 2 ? read_time(e.time) && read_fields(state, e)
                   : gravity_  ? read_v2<true>(state, e)
                               : read_v2<false>(state, e);
@@ -263,7 +275,7 @@ Status ChunkDecoder<T>::next(const Particles<T>& state, DecodedEvent<T>& e) {
 
 template <class T>
 Status ChunkDecoder<T>::check_consumed() const {
-  if (!times_.at_end() || !kinds_.at_end() || !disks_.at_end() || !partners_.at_end() || !residuals_.at_end() ||
+  if (!times_.at_end() || !kinds_.at_end() || !disks_.at_end() || !partners_.at_end() || !residuals_.at_end() || !spins_.at_end() ||
       raw_at_ != raw_.size())
     return Error{"chunk at event " + std::to_string(first_event_) + ": its columns hold more data than its " +
                  std::to_string(count_) + " events"};

@@ -46,6 +46,10 @@ struct EventPhysics {
   // Wall segments, built by make_segment from the header's scalars as the engine builds them from the
   // scene's doubles converted to T (the same values, so the same unit vectors).
   std::vector<Segment<T>> segments;
+  // Rough runs (the header's onePlusBeta; the replayed state then has omega and inertia): 1 + beta per
+  // species pair, row-major like one_plus_xi, and of the box walls.
+  std::vector<T> one_plus_beta{T(0)};
+  T wall_one_plus_beta = 0;
 
   // The box as the engine sets it up (engine_core.hpp: lx_, half_lx_, b_noise2_).
   static EventPhysics box(double lx, double ly, bool periodic, T gx, T gy) {
@@ -62,15 +66,24 @@ struct EventPhysics {
     if (a >= species || b >= species) return one_plus_xi[0];
     return one_plus_xi[a * species + b];
   }
+  T pair_one_plus_beta(std::int32_t si, std::int32_t sj) const {
+    const std::size_t a = std::size_t(si), b = std::size_t(sj);
+    if (a >= species || b >= species || one_plus_beta.size() != species * species) return one_plus_beta[0];
+    return one_plus_beta[a * species + b];
+  }
 };
 
 // Post-collision velocities of pair (i, j) at time t, as Engine::resolve_pair computes them: both records
 // brought to t, the separation with the nearest periodic image, the collision rule with 1 + xi of the
 // pair (2 when the TC model made it elastic). `a` and `b` are the records of i and j already brought to t
 // (advance_disk): replay keeps them and stores them with the new velocities instead of advancing twice.
+// Rough runs (p.omega not empty): the tangential part too (Engine::resolve_pair: after the normal rule, from
+// the velocities and spins before the collision, skipped when the TC model made it elastic), and the
+// spins after it in w[0], w[1] when w is given.
 template <class T>
 inline void predict_pair_velocities(const EventPhysics<T>& ph, const Particles<T>& p, std::int32_t i,
-                                    std::int32_t j, const Disk<T>& a, const Disk<T>& b, bool tc_elastic, T v[4]) {
+                                    std::int32_t j, const Disk<T>& a, const Disk<T>& b, bool tc_elastic, T v[4],
+                                    T* w = nullptr) {
   T dx = b.x - a.x, dy = b.y - a.y;
   if (ph.periodic) {
     if (dx > ph.half_lx) dx -= ph.lx; else if (dx < -ph.half_lx) dx += ph.lx;
@@ -79,28 +92,44 @@ inline void predict_pair_velocities(const EventPhysics<T>& ph, const Particles<T
   const T opx = tc_elastic ? T(2) : ph.pair_one_plus_xi(p.species[std::size_t(i)], p.species[std::size_t(j)]);
   v[0] = a.vx, v[1] = a.vy, v[2] = b.vx, v[3] = b.vy;
   collide_pair(dx, dy, p.mass[std::size_t(i)], p.mass[std::size_t(j)], opx, v[0], v[1], v[2], v[3]);
+  if (p.omega.empty()) return;
+  const std::size_t si = std::size_t(i), sj = std::size_t(j);
+  T wi = p.omega[si], wj = p.omega[sj];
+  const T opb = tc_elastic ? T(0) : ph.pair_one_plus_beta(p.species[si], p.species[sj]);
+  collide_pair_tangential(dx, dy, b.vx - a.vx, b.vy - a.vy, p.mass[si], p.mass[sj], a.r, b.r, p.inertia[si],
+                          p.inertia[sj], opb, v[0], v[1], v[2], v[3], wi, wj);
+  if (w) w[0] = wi, w[1] = wj;
 }
 
 template <class T>
 inline void predict_pair_velocities(const EventPhysics<T>& ph, const Particles<T>& p, std::int32_t i,
-                                    std::int32_t j, T t, bool tc_elastic, T v[4]) {
+                                    std::int32_t j, T t, bool tc_elastic, T v[4], T* w = nullptr) {
   Disk<T> a = p.disk[std::size_t(i)], b = p.disk[std::size_t(j)];
   advance_disk(a, t, ph.gx, ph.gy);
   advance_disk(b, t, ph.gx, ph.gy);
-  predict_pair_velocities(ph, p, i, j, a, b, tc_elastic, v);
+  predict_pair_velocities(ph, p, i, j, a, b, tc_elastic, v, w);
 }
 
 // Velocity after disk i hits `wall` at time t (Engine::resolve_wall). With xi_w = 1 collide_wall computes
 // exactly what collide_wall_elastic does (a multiplication by 1 and a negation are exact).
+// Rough runs: then the wall's tangential part (not when TC-elastic), the spin after it in *w if given.
 template <class T>
 inline void predict_wall_velocity(const EventPhysics<T>& ph, const Particles<T>& p, std::int32_t i,
-                                  std::int32_t wall, T t, bool tc_elastic, T v[2]) {
+                                  std::int32_t wall, T t, bool tc_elastic, T v[2], T* w = nullptr) {
   v[0] = p.vx_at(std::size_t(i), t), v[1] = p.vy_at(std::size_t(i), t);
+  const T vx0 = v[0], vy0 = v[1];
   const bool vertical = wall == kWallLeft || wall == kWallRight;
   if (tc_elastic)
     collide_wall_elastic(vertical, v[0], v[1]);
   else
     collide_wall(vertical, ph.xi_wall[wall & 3], v[0], v[1]);
+  if (p.omega.empty()) return;
+  static constexpr int kNormal[4][2] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};  // Engine::kWallNormal
+  const std::size_t si = std::size_t(i);
+  T wi = p.omega[si];
+  collide_wall_tangential(T(kNormal[wall & 3][0]), T(kNormal[wall & 3][1]), vx0, vy0, p.mass[si], p.disk[si].r,
+                          p.inertia[si], tc_elastic ? T(0) : ph.wall_one_plus_beta, v[0], v[1], wi);
+  if (w) *w = wi;
 }
 
 // Velocity after disk i hits segment s at time t (Engine::resolve_segment): a copy of the record brought

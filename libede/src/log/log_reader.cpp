@@ -206,6 +206,9 @@ Status LogReader::read_header_record(std::uint64_t offset, std::uint64_t payload
     const auto xi = h.getPairOnePlusXi(), xw = h.getWallRestitution();
     out.pair_one_plus_xi.assign(xi.begin(), xi.end());
     out.wall_restitution.assign(xw.begin(), xw.end());
+    const auto inertia = h.getInertia(), beta = h.getOnePlusBeta();
+    out.inertia.assign(inertia.begin(), inertia.end());
+    out.one_plus_beta.assign(beta.begin(), beta.end());
   } catch (const kj::Exception& e) {
     return Error{at(path_, offset) + ": malformed header record (" + e.getDescription().cStr() + ")", ErrorKind::Corrupt};
   }
@@ -220,6 +223,11 @@ Status LogReader::read_header_record(std::uint64_t offset, std::uint64_t payload
                         h.wall_restitution.size() % w == 0;
   if (h.column_encoding >= 2 && (h.pair_one_plus_xi.size() != species * species * w || !walls_ok))
     return Error{at(path_, offset) + ": the header's restitution tables do not match its species count",
+                 ErrorKind::Corrupt};
+  if ((!h.inertia.empty() || !h.one_plus_beta.empty()) &&
+      (h.column_encoding < 2 || h.inertia.size() != std::size_t(h.disks) * w ||
+       h.one_plus_beta.size() != (species * species + 4) * w))
+    return Error{at(path_, offset) + ": the header's rotation data (inertia, 1 + beta) does not match its disks and species",
                  ErrorKind::Corrupt};
   for (const std::uint32_t s : h.species)
     if (s >= h.species_names.size()) return Error{at(path_, offset) + ": a disk names a species that does not exist", ErrorKind::Corrupt};

@@ -40,6 +40,10 @@ struct LogHeaderInfo {
   std::uint32_t column_encoding = 1;                   // 1 or 2: the format version's chunk columns
   std::vector<unsigned char> pair_one_plus_xi;         // version 2: S x S raw scalars (S species)
   std::vector<unsigned char> wall_restitution;         // version 2: 4 raw scalars, then 5 per segment
+  // Rough runs only (FORMAT.md, "Rotation"; else both empty): I per disk (shuffled scalars), and S x S + 4
+  // raw scalars 1 + beta (pairs, then the walls).
+  std::vector<unsigned char> inertia, one_plus_beta;
+  bool rotation() const { return !inertia.empty(); }
 };
 
 struct LogRecordRef {

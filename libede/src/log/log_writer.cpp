@@ -35,6 +35,27 @@ logschema::ScalarType schema_scalar() {
   return logschema::ScalarType::FLOAT80;
 }
 
+// The root struct of a record. A run without rotation builds it at the size the schema had before rotation
+// (`data_words`, `pointers`: the fields it sets all lie within), because Cap'n Proto lays out a struct at
+// its schema's full size, null pointers included: so such a run's records keep their bytes. Rough runs
+// build the full struct, rotation fields included. Readers see absent fields as empty either way.
+template <class S>
+typename S::Builder init_record(capnp::MallocMessageBuilder& message, bool full, std::uint16_t data_words,
+                                std::uint16_t pointers) {
+  if (full) return message.initRoot<S>();
+  return message.getRoot<capnp::AnyPointer>().initAsAnyStruct(data_words, pointers).template as<S>();
+}
+// The sizes before rotation (data words, pointers); the rotation fields are pointers appended after them.
+constexpr std::uint16_t kHeaderWords = 11, kHeaderPointers = 11;
+constexpr std::uint16_t kChunkWords = 2, kChunkPointers = 6;
+constexpr std::uint16_t kKeyframeWords = 5, kKeyframePointers = 9;
+static_assert(capnp::_::structSize<logschema::Header>().data == kHeaderWords &&
+              capnp::_::structSize<logschema::Header>().pointers == kHeaderPointers + 2);
+static_assert(capnp::_::structSize<logschema::Chunk>().data == kChunkWords &&
+              capnp::_::structSize<logschema::Chunk>().pointers == kChunkPointers + 1);
+static_assert(capnp::_::structSize<logschema::Keyframe>().data == kKeyframeWords &&
+              capnp::_::structSize<logschema::Keyframe>().pointers == kKeyframePointers + 1);
+
 std::vector<unsigned char> to_bytes(capnp::MessageBuilder& message) {
   const kj::Array<capnp::word> words = capnp::messageToFlatArray(message);
   const auto bytes = words.asBytes();
@@ -96,6 +117,7 @@ LogRunInfo LogRunInfo::from(const Scene& scene, const EngineOptions& options, co
   r.gx = options.physics.gravity[0];
   r.gy = options.physics.gravity[1];
   r.set_restitution(options.physics);
+  r.rotation = uses_rotation(options);
   return r;
 }
 
@@ -112,6 +134,12 @@ void LogRunInfo::set_restitution(const PhysicsSpec& physics) {
     if (a < n && b < n) pair_restitution[a * n + b] = pair_restitution[b * n + a] = pr.value;
   }
   for (int w = 0; w < 4; ++w) wall_restitution[w] = physics.wall(w);
+  pair_roughness.assign(n * n, physics.roughness);  // Engine::setup_roughness
+  for (const PairRestitution& pr : physics.pairs) {
+    const std::size_t a = index_of(pr.a), b = index_of(pr.b);
+    if (a < n && b < n) pair_roughness[a * n + b] = pair_roughness[b * n + a] = physics.pair_roughness(pr);
+  }
+  wall_roughness = physics.wall_roughness;
   segments.clear();
   for (const SegmentSpec& s : physics.segments)
     segments.insert(segments.end(), {s.from[0], s.from[1], s.to[0], s.to[1], s.restitution});
@@ -128,6 +156,7 @@ struct ChunkCoder {
   ChunkEncoder<T> chunk{mass, format_version, physics};
   Particles<T> replayed;
   std::uint32_t run_id = 0;  // the header's (log/run_id.hpp), repeated in every chunk
+  bool rotation = false;     // rough run: chunks carry the spin column
 
   explicit ChunkCoder(std::uint32_t version) : format_version(version) {}
 
@@ -136,7 +165,7 @@ struct ChunkCoder {
     for (const EventOutcome<T>& e : events) add_event(e);
     const ChunkColumns c = chunk.columns();
     capnp::MallocMessageBuilder message;
-    auto b = message.initRoot<logschema::Chunk>();
+    auto b = init_record<logschema::Chunk>(message, rotation, kChunkWords, kChunkPointers);
     b.setFirstEvent(first_event);
     b.setCount(chunk.count());
     b.setRunId(run_id);
@@ -146,6 +175,7 @@ struct ChunkCoder {
     set_data(b.initPartners(std::uint32_t(c.partners.size())), c.partners);
     set_data(b.initVelocitiesRaw(std::uint32_t(c.raw.size())), c.raw);
     set_data(b.initVelocityResiduals(std::uint32_t(c.residuals.size())), c.residuals);
+    if (rotation) set_data(b.initSpinResiduals(std::uint32_t(c.spins.size())), c.spins);
     return to_bytes(message);
   }
 
@@ -155,6 +185,7 @@ struct ChunkCoder {
     DecodedEvent<T> d;
     d.time = e.time, d.kind = e.kind, d.i = e.i, d.j = e.j;
     d.vix = e.vix, d.viy = e.viy, d.vjx = e.vjx, d.vjy = e.vjy;
+    d.wi = e.wi, d.wj = e.wj;
     apply_event(d, replayed, physics.lx, physics.ly);
   }
 };
@@ -167,6 +198,7 @@ struct LogWriter<T>::Impl {
   ChunkCoder<T> coder{settings.format_version};  // the worker's, once set up (coder_ready)
   bool coder_ready = false;
   std::vector<Disk<T>> resume_disks;
+  std::vector<T> resume_omega;
   // The open chunk, on the event loop: its events as the engine reported them.
   std::vector<EventOutcome<T>> chunk_events;
   std::uint64_t chunk_first = 0;
@@ -206,8 +238,18 @@ struct LogWriter<T>::Impl {
       physics.segments.push_back(make_segment(T(g[0]), T(g[1]), T(g[2]), T(g[3]), T(g[4])));
     }
     physics.tc_model = run.tc_model;
+    coder.rotation = run.rotation;
+    if (run.rotation) {
+      physics.one_plus_beta.clear();
+      for (const double b : run.pair_roughness) physics.one_plus_beta.push_back(T(1) + T(b));
+      physics.one_plus_beta.resize(physics.species * physics.species,
+                                   physics.one_plus_beta.empty() ? T(0) : physics.one_plus_beta[0]);
+      physics.wall_one_plus_beta = T(1) + T(run.wall_roughness);
+    }
     if (settings.format_version < 2) return;
     coder.replayed = p;
+    if (!resume_omega.empty()) coder.replayed.omega = resume_omega;
+    resume_omega.clear();
     for (std::size_t i = 0; i < resume_disks.size() && i < coder.replayed.size(); ++i) {
       Disk<T>& d = coder.replayed.disk[i];
       const Disk<T>& from = resume_disks[i];
@@ -218,7 +260,7 @@ struct LogWriter<T>::Impl {
 
   void write_header(const Particles<T>& p) {
     capnp::MallocMessageBuilder message;
-    auto h = message.initRoot<logschema::Header>();
+    auto h = init_record<logschema::Header>(message, run.rotation, kHeaderWords, kHeaderPointers);
     h.setEngineVersion(run.engine_version.empty() ? std::string(EDE_VERSION) : run.engine_version);
     h.setCompiler(run.compiler.empty() ? build_compiler() : run.compiler);
     h.setCompileFlags(run.compile_flags.empty() ? build_flags() : run.compile_flags);
@@ -253,6 +295,13 @@ struct LogWriter<T>::Impl {
       std::vector<T> walls(physics.xi_wall, physics.xi_wall + 4);
       for (const double v : run.segments) walls.push_back(T(v));
       set_data(h.initWallRestitution(std::uint32_t(walls.size() * kScalarWidth<T>)), raw_scalars(walls));
+      if (run.rotation) {
+        set_data(h.initInertia(std::uint32_t(p.size() * kScalarWidth<T>)),
+                 scalar_column<T>(p.size(), [&](std::size_t i) { return p.inertia[i]; }));
+        std::vector<T> beta = physics.one_plus_beta;
+        beta.insert(beta.end(), 4, physics.wall_one_plus_beta);
+        set_data(h.initOnePlusBeta(std::uint32_t(beta.size() * kScalarWidth<T>)), raw_scalars(beta));
+      }
     }
     // Set before the first chunk is submitted: the worker reads coder.run_id only after that. Format
     // version 1 predates run ids and keeps its bytes (its records carry 0: not checked).
@@ -284,7 +333,7 @@ struct LogWriter<T>::Impl {
     flush_chunk();
     const std::size_t n = p.size();
     capnp::MallocMessageBuilder message;
-    auto k = message.initRoot<logschema::Keyframe>();
+    auto k = init_record<logschema::Keyframe>(message, run.rotation, kKeyframeWords, kKeyframePointers);
     k.setEventsBefore(logged);
     k.setRunId(run_id);
     set_data(k.initTime(kScalarWidth<T>), one_scalar(time));
@@ -296,6 +345,7 @@ struct LogWriter<T>::Impl {
     set_data(k.initVx(bytes_per_column), column([&](std::size_t i) { return p.disk[i].vx; }));
     set_data(k.initVy(bytes_per_column), column([&](std::size_t i) { return p.disk[i].vy; }));
     set_data(k.initT(bytes_per_column), column([&](std::size_t i) { return p.disk[i].t; }));
+    if (run.rotation) set_data(k.initOmega(bytes_per_column), column([&](std::size_t i) { return p.omega[i]; }));
     if (rebuild) write_resume_fields(k, *rebuild);
     logfmt::RecordHeader rh;
     rh.kind = logfmt::RecordKind::Keyframe;
@@ -370,7 +420,8 @@ template <class T>
 Result<std::unique_ptr<LogWriter<T>>> LogWriter<T>::create(const std::string& path, const LogRunInfo& run,
                                                            const LogSettings& settings,
                                                            const LogContinuation* continuation,
-                                                           const std::vector<Disk<T>>* resume_disks) {
+                                                           const std::vector<Disk<T>>* resume_disks,
+                                                           const std::vector<T>* resume_omega) {
   if (settings.chunk_events == 0) return Error{"log settings: chunk_events must be positive"};
   if (settings.format_version < logfmt::kOldestFormatVersion || settings.format_version > logfmt::kFormatVersion)
     return Error{"log settings: format version " + std::to_string(settings.format_version) + " is not one this ede writes"};
@@ -389,6 +440,9 @@ Result<std::unique_ptr<LogWriter<T>>> LogWriter<T>::create(const std::string& pa
     impl->out.write_raw(std::move(header));
   }
   if (resume_disks) impl->resume_disks = *resume_disks;
+  if (resume_omega) impl->resume_omega = *resume_omega;
+  if (run.rotation && settings.format_version < 2)
+    return Error{"log settings: a run of rough (rotating) disks is written in format version 2 only"};
   impl->chunk_first = impl->logged;
   impl->chunk_events.reserve(settings.chunk_events);
   return std::unique_ptr<LogWriter<T>>(new LogWriter<T>(std::move(impl)));

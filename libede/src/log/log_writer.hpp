@@ -52,6 +52,11 @@ struct LogRunInfo {
   double wall_restitution[4] = {1, 1, 1, 1};
   // Wall segments, five values each: ax, ay, bx, by, restitution (the header appends them to the walls').
   std::vector<double> segments;
+  // Rough or spinning disks (EngineOptions::rotation): the header then carries I per disk and 1 + beta, and
+  // chunks and keyframes the spins (FORMAT.md, "Rotation"). beta of S x S species pairs, then of the walls.
+  bool rotation = false;
+  std::vector<double> pair_roughness{-1};
+  double wall_roughness = -1;
   std::string engine_version, compiler, compile_flags;  // empty: this build's (a converted log keeps its own)
   // pair_restitution, wall_restitution and segments from the scene's physics, as the engine builds them.
   void set_restitution(const PhysicsSpec& physics);
@@ -86,7 +91,8 @@ class LogWriter final : public Sink<T> {
   static Result<std::unique_ptr<LogWriter>> create(const std::string& path, const LogRunInfo& run,
                                                    const LogSettings& settings,
                                                    const LogContinuation* continuation = nullptr,
-                                                   const std::vector<Disk<T>>* resume_disks = nullptr);
+                                                   const std::vector<Disk<T>>* resume_disks = nullptr,
+                                                   const std::vector<T>* resume_omega = nullptr);
   ~LogWriter() override;
 
   void on_start(T time, const Particles<T>& particles) override;

@@ -70,6 +70,9 @@ std::string first_difference(const ReplayedEvent<T>& a, const ReplayedEvent<T>& 
   if (has_vi(a.kind) && !same_bits(a.viy, b.viy)) return "viy";
   if (a.kind == EventKind::Pair && !same_bits(a.vjx, b.vjx)) return "vjx";
   if (a.kind == EventKind::Pair && !same_bits(a.vjy, b.vjy)) return "vjy";
+  // Rough logs: the spins after pair and wall events (0 on both sides for smooth disks).
+  if ((a.kind == EventKind::Pair || a.kind == EventKind::Wall) && !same_bits(a.wi, b.wi)) return "omega_i";
+  if (a.kind == EventKind::Pair && !same_bits(a.wj, b.wj)) return "omega_j";
   return "";
 }
 

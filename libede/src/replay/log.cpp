@@ -58,6 +58,7 @@ Event event_of(const ReplayedEvent<T>& e) {
   out.xi = e.xi, out.yi = e.yi, out.xj = e.xj, out.yj = e.yj;
   out.vix_before = e.vix0, out.viy_before = e.viy0, out.vjx_before = e.vjx0, out.vjy_before = e.vjy0;
   out.vix = e.vix, out.viy = e.viy, out.vjx = e.vjx, out.vjy = e.vjy;
+  out.omega_i_before = e.wi0, out.omega_j_before = e.wj0, out.omega_i = e.wi, out.omega_j = e.wj;
   return out;
 }
 

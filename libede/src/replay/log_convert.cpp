@@ -99,6 +99,9 @@ Status convert_log(const std::shared_ptr<const LogReader>& log, const std::strin
     return Error{log->path() + ": the log is incomplete (" + log->incomplete_reason() +
                  "); finish or resume the run before converting it"};
   if (log->damaged()) return Error{log->path() + ": the log is damaged; it cannot be converted"};
+  if (log->header().rotation())
+    return Error{log->path() + ": a log of rough (rotating) disks cannot be converted yet: format version 1 has no "
+                 "angular velocities, and rewriting one as version 2 is not implemented"};
   if (version < 1 || version > 2)
     return Error{"format version " + std::to_string(version) + " is not one this ede writes (1 or 2)"};
   switch (log->header().scalar) {

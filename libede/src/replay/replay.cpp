@@ -66,6 +66,7 @@ struct KeyframeData {
   T time{};
   bool resumable = false;
   std::vector<T> x, y, vx, vy, t, last_collision;
+  std::vector<T> omega;  // rough logs
   std::vector<std::int32_t> last_partner;
   std::vector<std::uint64_t> counts;
   std::uint64_t next_sample = 0, next_action = 0, same_time_events = 0;
@@ -90,6 +91,8 @@ Result<KeyframeData<T>> read_keyframe(const LogReader& log, const LogRecordRef& 
     if (!read_column(kf.getX(), n, k.x) || !read_column(kf.getY(), n, k.y) || !read_column(kf.getVx(), n, k.vx) ||
         !read_column(kf.getVy(), n, k.vy) || !read_column(kf.getT(), n, k.t) || !std::isfinite(double(k.time)))
       return Error{where + ": a state column is malformed or holds a non-finite number"};
+    if (log.header().rotation() && !read_column(kf.getOmega(), n, k.omega))
+      return Error{where + ": the angular velocity column is malformed or holds a non-finite number"};
     if (k.resumable) {
       for (const std::int32_t p : kf.getLastPartner()) {
         if (p < -1 || p >= std::int32_t(n)) return Error{where + ": a last-partner id is out of range"};
@@ -164,6 +167,16 @@ Result<std::unique_ptr<Replay<T>>> Replay<T>::create(std::shared_ptr<const LogRe
       r->physics_.segments.push_back(make_segment(g[0], g[1], g[2], g[3], g[4]));
     }
   }
+  if (h.rotation()) {
+    const std::size_t s = std::max<std::size_t>(1, h.species_names.size());
+    std::vector<T> beta;
+    if (!read_column(h.inertia.data(), h.inertia.size(), n, r->state_.inertia) ||
+        !read_raw_scalars(h.one_plus_beta, s * s + 4, beta))
+      return Error{log->path() + ": the header's rotation data (inertia, 1 + beta) is malformed"};
+    r->state_.omega.assign(n, T(0));
+    r->physics_.one_plus_beta.assign(beta.begin(), beta.begin() + std::ptrdiff_t(s * s));
+    r->physics_.wall_one_plus_beta = beta[s * s];
+  }
   if (Status s = r->load_keyframe(0); !s) return s.error();
   r->last_event_time_initial_ = r->time_;
   return r;
@@ -186,6 +199,7 @@ Status Replay<T>::load_keyframe(std::size_t k) {
     Disk<T>& d = state_.disk[i];
     d.x = kf.x[i], d.y = kf.y[i], d.vx = kf.vx[i], d.vy = kf.vy[i], d.t = kf.t[i];
   }
+  if (!kf.omega.empty()) state_.omega = kf.omega;
   applied_ = kf.events_before;
   time_ = last_event_time_ = kf.time;
   cursor_ = std::make_shared<Cursor>();
@@ -229,10 +243,13 @@ Status Replay<T>::open_chunk() {
       return Error{where + ": its event range disagrees with its record header"};
     if (Status s = check_run_id(*log_, chunk.getRunId(), ref.offset, "chunk"); !s) return s;
     const capnp::Data::Reader cols[] = {chunk.getTimes(),    chunk.getKinds(),         chunk.getDisks(),
-                                        chunk.getPartners(), chunk.getVelocitiesRaw(), chunk.getVelocityResiduals()};
-    const unsigned char* ptrs[6];
-    std::size_t sizes[6];
-    for (int k = 0; k < 6; ++k) ptrs[k] = cols[k].begin(), sizes[k] = cols[k].size();
+                                        chunk.getPartners(), chunk.getVelocitiesRaw(), chunk.getVelocityResiduals(),
+                                        chunk.getSpinResiduals()};
+    constexpr int kCols = ChunkDecoder<T>::kColumnCount;
+    static_assert(std::size(cols) == kCols);
+    const unsigned char* ptrs[kCols];
+    std::size_t sizes[kCols];
+    for (int k = 0; k < kCols; ++k) ptrs[k] = cols[k].begin(), sizes[k] = cols[k].size();
     // The column pointers point into `storage`, which the decoder takes over (moving a vector keeps its buffer).
     cursor_->decoder = std::make_unique<ChunkDecoder<T>>(std::move(storage), ptrs, sizes, ref.first_event,
                                                          std::uint32_t(ref.count), state_.size(), last_event_time_,
@@ -270,6 +287,7 @@ Status Replay<T>::advance(std::uint64_t target_event, const T* until_time,
       continue;
     }
     ReplayedEvent<T> out{e.index, e.time, e.kind, e.i, e.j, e.vix, e.viy, e.vjx, e.vjy};
+    out.wi = e.wi, out.wj = e.wj;
     before_event(e, out);
     if (!apply_event(e, state_, lx_, ly_)) return non_finite_error(e.index);
     ++applied_;
@@ -296,6 +314,11 @@ void Replay<T>::before_event(const DecodedEvent<T>& e, ReplayedEvent<T>& out) co
   if (e.kind == EventKind::Pair)
     out.vjx0 = state_.vx_at(std::size_t(e.j), e.time), out.vjy0 = state_.vy_at(std::size_t(e.j), e.time);
   if (e.kind == EventKind::Wrap) out.vix = out.vix0, out.viy = out.viy0;
+  if (!state_.omega.empty()) {
+    out.wi0 = state_.omega[std::size_t(e.i)];
+    if (e.kind == EventKind::Pair) out.wj0 = state_.omega[std::size_t(e.j)];
+    if (e.kind != EventKind::Pair && e.kind != EventKind::Wall) out.wi = out.wi0;  // unchanged
+  }
 }
 
 template <class T>
@@ -417,6 +440,7 @@ Result<ResumePoint<T>> Replay<T>::resume_point(std::size_t keyframe) const {
     d.last_partner = kf.last_partner[i];
   }
   r.last_collision = kf.last_collision;
+  r.omega = kf.omega;
   for (int c = 0; c < kCountedKindsV2; ++c) r.counts.by_kind[c] = kf.counts[std::size_t(c)];
   r.counts.stale = kf.counts[kCountedKindsV2];
   r.counts.tc_elastic = kf.counts[kCountedKindsV2 + 1];

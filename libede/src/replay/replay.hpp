@@ -29,6 +29,7 @@ struct ReplayedEvent {
   // Positions at the event (after it: a wrap has moved i by one box length) and velocities just before.
   T xi{}, yi{}, xj{}, yj{};
   T vix0{}, viy0{}, vjx0{}, vjy0{};
+  T wi{}, wj{}, wi0{}, wj0{};     // rough logs: angular velocities after and before (pair: both; wall: i)
 };
 
 // The time the run of `log` reached (complete logs), else its last event's time, exactly in T;

@@ -24,7 +24,9 @@ namespace {
 
 template <class T>
 ReplayedEvent<T> as_replayed(const EventOutcome<T>& o, std::uint64_t index) {
-  return {index, o.time, o.kind, o.i, o.j, o.vix, o.viy, o.vjx, o.vjy};
+  ReplayedEvent<T> r{index, o.time, o.kind, o.i, o.j, o.vix, o.viy, o.vjx, o.vjy};
+  r.wi = o.wi, r.wj = o.wj;
+  return r;
 }
 
 // The first field in which two disk records differ, or "".

@@ -18,6 +18,7 @@ Result<RunSetup> setup_new_run(const Scene& scene) {
     if (Status c = check_run_can_finish(s.scene, s.initial); !c) return c.error();
     RunSetup r{std::move(s.scene), std::move(s.initial), {}, nullptr};
     r.options = engine_options_from(r.scene, r.initial.size());
+    r.options.rotation = r.options.rotation || !r.initial.omega.empty();  // a rough state keeps its spins
     return r;
   }
   auto initial = build_initial_state(scene);

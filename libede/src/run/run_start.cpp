@@ -26,6 +26,7 @@ InitialState initial_of(const State& s) {
   st.species_names = s.species_names;
   for (std::size_t i = 0; i < s.size(); ++i)
     st.add(s.x[i], s.y[i], s.vx[i], s.vy[i], s.radius[i], s.mass[i], s.species[i]);
+  for (std::size_t i = 0; i < s.omega.size(); ++i) st.omega.push_back(s.omega[i]), st.inertia.push_back(s.inertia[i]);
   return st;
 }
 
@@ -89,8 +90,10 @@ void adjust_velocities(const StartSpec& start, InitialState& st) {
     const double ux = double(px / m), uy = double(py / m);
     for (std::size_t i = 0; i < st.size(); ++i) st.vx[i] -= ux, st.vy[i] -= uy;
   }
-  if (start.reverse_velocities)
+  if (start.reverse_velocities) {
     for (std::size_t i = 0; i < st.size(); ++i) st.vx[i] = -st.vx[i], st.vy[i] = -st.vy[i];
+    for (double& w : st.omega) w = -w;  // rough disks: the reversed motion spins the other way
+  }
 }
 
 Status check_pair_names(const Scene& scene, const InitialState& st) {

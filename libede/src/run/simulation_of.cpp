@@ -184,7 +184,8 @@ class SimulationOf final : public Simulation::Impl {
 
 // Frees the per-disk arrays of a state the engine has copied (the box and the species names stay).
 void release_disks(InitialState& s) {
-  for (std::vector<double>* v : {&s.x, &s.y, &s.vx, &s.vy, &s.radius, &s.mass}) std::vector<double>().swap(*v);
+  for (std::vector<double>* v : {&s.x, &s.y, &s.vx, &s.vy, &s.radius, &s.mass, &s.omega, &s.inertia})
+    std::vector<double>().swap(*v);
   std::vector<std::int32_t>().swap(s.species);
 }
 
@@ -215,7 +216,8 @@ Result<std::unique_ptr<Simulation::Impl>> make_in(RunSetup setup, const Simulati
       if (setup.resumed_log) settings.format_version = setup.resumed_log->header().format_version;  // continue as written
       auto w = LogWriter<T>::create(log_path, LogRunInfo::from(setup.scene, setup.options, setup.initial.species_names),
                                     settings, resumption ? &resumption->continuation : nullptr,
-                                    resumption ? &resumption->point.disks : nullptr);
+                                    resumption ? &resumption->point.disks : nullptr,
+                                    resumption ? &resumption->point.omega : nullptr);
       if (!w) return Error{w.error().message, ErrorKind::Io};
       log = std::move(w).value();
     }

@@ -22,13 +22,15 @@ constexpr std::string_view kWallsKeys[] = {"segments", "polygons"};
 constexpr std::string_view kSegmentKeys[] = {"from", "to", "restitution"};
 constexpr std::string_view kPolygonKeys[] = {"points", "closed", "restitution"};
 constexpr std::string_view kBoxKeys[] = {"size", "boundary"};
-constexpr std::string_view kPhysicsKeys[] = {"restitution", "wall_restitution", "tc", "gravity", "pairs"};
+constexpr std::string_view kPhysicsKeys[] = {"restitution", "wall_restitution", "tc", "gravity", "pairs",
+                                             "roughness",   "wall_roughness"};
 constexpr std::string_view kWallRestitutionKeys[] = {"left", "right", "bottom", "top"};
-constexpr std::string_view kPairKeys[] = {"species", "restitution"};
+constexpr std::string_view kPairKeys[] = {"species", "restitution", "roughness"};
 constexpr std::string_view kEngineKeys[] = {"scalar", "rebuild_interval"};
 constexpr std::string_view kLogKeys[] = {"keyframe_interval", "chunk_events", "compression_level"};
 constexpr std::string_view kSpeciesKeys[] = {"name",    "count",     "radius",  "mass",
-                                             "density", "placement", "velocity"};
+                                             "density", "placement", "velocity", "inertia_factor",
+                                             "omega",   "spin_temperature"};
 constexpr std::string_view kRadiusKeys[] = {"min", "max"};
 constexpr std::string_view kPlacementKeys[] = {"kind", "region", "packing_fraction", "lattice", "positions"};
 constexpr std::string_view kVelocityKeys[] = {"kind", "speed", "vector", "temperature", "values"};

@@ -56,6 +56,7 @@ void read_box(const Reader& top, Scene& scene) {
 }
 
 constexpr std::string_view kXiFix = "use a value from 0 (perfectly inelastic) to 1 (elastic)";
+constexpr std::string_view kBetaFix = "use a value from -1 (smooth, the default) to 1 (perfectly rough)";
 
 // wall_restitution = 0.5, or { left = 1.0, bottom = 0.5 } for some walls (the others stay elastic).
 void read_wall_restitution(const Reader& p, PhysicsSpec& out) {
@@ -71,7 +72,7 @@ void read_wall_restitution(const Reader& p, PhysicsSpec& out) {
 }
 
 // [[physics.pairs]] species = ["bed", "projectile"], restitution = 0.5
-PairRestitution read_pair(const toml::node& node, std::size_t i, const Reader& p) {
+PairRestitution read_pair(const toml::node& node, std::size_t i, const Reader& p, double default_xi) {
   const std::string path = "physics.pairs[" + std::to_string(i) + "]";
   const toml::table* table = node.as_table();
   if (!table) p.fail_node(&node, path, "expected a table", "write each pair as a [[physics.pairs]] table");
@@ -81,9 +82,11 @@ PairRestitution read_pair(const toml::node& node, std::size_t i, const Reader& p
   if (!names || names->size() != 2 || !names->get(0)->is_string() || !names->get(1)->is_string())
     r.fail("species", "expected two species names", "write species = [\"bed\", \"projectile\"]");
   const auto value = r.number("restitution", Bounds::closed(0, 1), kXiFix);
-  if (!value) missing(r, "restitution", "a pair needs its restitution", "restitution = 0.5");
+  const auto beta = r.number("roughness", Bounds::closed(-1, 1), kBetaFix);
+  if (!value && !beta)
+    missing(r, "restitution", "a pair needs its restitution (or its roughness)", "restitution = 0.5");
   return {names->get(0)->value<std::string>().value_or(""), names->get(1)->value<std::string>().value_or(""),
-          *value};
+          value.value_or(default_xi), beta};
 }
 
 PhysicsSpec read_physics(const Reader& top) {
@@ -94,9 +97,11 @@ PhysicsSpec read_physics(const Reader& top) {
   read_wall_restitution(p, out);
   out.tc = p.number("tc", Bounds::non_negative(), "use 0 (TC model off) or a positive time").value_or(0);
   if (const auto g = p.numbers("gravity", 2, "[gx, gy]", Bounds::any())) out.gravity = {(*g)[0], (*g)[1]};
+  out.roughness = p.number("roughness", Bounds::closed(-1, 1), kBetaFix).value_or(-1);
+  out.wall_roughness = p.number("wall_roughness", Bounds::closed(-1, 1), kBetaFix).value_or(-1);
   if (const toml::array* list = p.array("pairs"))
     for (std::size_t i = 0; i < list->size(); ++i) {
-      const PairRestitution pair = read_pair(*list->get(i), i, p);
+      const PairRestitution pair = read_pair(*list->get(i), i, p, out.restitution);
       for (std::size_t k = 0; k < out.pairs.size(); ++k) {
         const PairRestitution& q = out.pairs[k];
         if ((q.a == pair.a && q.b == pair.b) || (q.a == pair.b && q.b == pair.a))
@@ -399,6 +404,21 @@ VelocitySpec read_velocity(const Reader& sp, std::int64_t count) {
   return out;
 }
 
+// Rough disks: inertia_factor (I = f m r^2, default 0.5, a uniform disk), and the initial angular
+// velocity: omega = w for every disk, or spin_temperature = kT (omega ~ N(0, kT / I) per disk), not both.
+void read_rotation(const Reader& sp, SpeciesSpec& s) {
+  s.inertia_factor = sp.number("inertia_factor", Bounds::positive(),
+                               "give a positive factor f of I = f m r^2, e.g. 0.5 (a uniform disk) or 1 (a ring)")
+                         .value_or(0.5);
+  const auto omega = sp.number("omega", Bounds::any());
+  const auto kt = sp.number("spin_temperature", Bounds::non_negative(), "give kT >= 0 of the rotation, e.g. 1.0");
+  if (omega && kt)
+    sp.fail("spin_temperature", "both omega and spin_temperature are given",
+            "keep omega (the same angular velocity for every disk) or spin_temperature (drawn per disk), not both");
+  if (omega) s.spin = {SpinSpec::Kind::Value, *omega, 0};
+  if (kt) s.spin = {SpinSpec::Kind::Maxwell, 0, *kt};
+}
+
 // Explicit positions: the centre inside the box, and with walls at least the smallest radius from them.
 void check_positions(const Reader& sp, const SpeciesSpec& s, const Scene& scene) {
   const Reader p = sp.section("placement");
@@ -454,6 +474,7 @@ SpeciesSpec read_species(const toml::node& node, std::size_t i, const Reader& to
   s.radius = read_radius(sp, s.placement);
   s.mass = read_mass(sp);
   s.velocity = read_velocity(sp, s.count);
+  read_rotation(sp, s);
   if (s.placement.kind == PlacementKind::Explicit) check_positions(sp, s, scene);
   return s;
 }
@@ -554,6 +575,10 @@ bool elastic_in_effect(const Scene& scene) {
   if (scene.boundary == BoundaryKind::Walls)
     for (int w = 0; w < 4; ++w) all = all && ph.wall(w) == 1;
   for (const SegmentSpec& s : ph.segments) all = all && s.restitution == 1;
+  const auto keeps_energy = [](double beta) { return beta == -1 || beta == 1; };  // smooth, or perfectly rough
+  all = all && keeps_energy(ph.roughness);
+  for (const PairRestitution& p : ph.pairs) all = all && keeps_energy(ph.pair_roughness(p));
+  if (scene.boundary == BoundaryKind::Walls) all = all && keeps_energy(ph.wall_roughness);
   return all;
 }
 
@@ -578,6 +603,12 @@ void check_physics(const Reader& top, const Scene& scene) {
     top.section("stop").fail("energy_fraction",
                              "with gravity the kinetic energy changes between collisions, so it cannot stop a run",
                              "stop on time (stop.time) or on events");
+  if (scene.rotates() && scene.physics.has_gravity())
+    p.fail("gravity", "rough or spinning disks under gravity are not supported yet",
+           "remove gravity, or make the disks smooth (physics.roughness = -1, no species omega)");
+  if (scene.rotates() && !scene.physics.segments.empty())
+    p.fail("roughness", "rough or spinning disks with wall segments are not supported yet",
+           "remove the [walls] segments, or make the disks smooth (physics.roughness = -1, no species omega)");
   const StopSpec& st = scene.stop;
   if (st.energy_fraction && !st.time && !st.events && !st.collisions_per_particle && elastic_in_effect(scene))
     top.section("stop").fail("energy_fraction",

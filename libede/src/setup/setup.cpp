@@ -395,6 +395,7 @@ Result<InitialState> build_initial_state(const Scene& scene) {
     setup_detail::assign_velocities(scene.species[k].velocity, m, streams[k], vx, vy);
     for (std::size_t i = 0; i < d.x.size(); ++i)
       state.add(d.x[i], d.y[i], vx[i], vy[i], d.r[i], m[i], std::int32_t(k));
+    if (scene.rotates()) setup_detail::assign_spins(scene.species[k], m, d.r, streams[k], state.omega, state.inertia);
   }
   if (Status st = check_initial_state(state, scene.boundary, scene.source_name); !st) return st.error();
   if (Status st = check_disks_clear_of_segments(state, scene.physics.segments, scene.source_name); !st)

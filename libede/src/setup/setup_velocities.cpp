@@ -41,4 +41,20 @@ void assign_velocities(const VelocitySpec& spec, const std::vector<double>& mass
   }
 }
 
+void assign_spins(const SpeciesSpec& species, const std::vector<double>& mass, const std::vector<double>& radius,
+                  Rng& rng, std::vector<double>& omega, std::vector<double>& inertia) {
+  for (std::size_t k = 0; k < mass.size(); ++k) {
+    const double moment = species.inertia_factor * mass[k] * radius[k] * radius[k];
+    double w = 0;
+    if (species.spin.kind == SpinSpec::Kind::Value) w = species.spin.omega;
+    if (species.spin.kind == SpinSpec::Kind::Maxwell) {
+      double z0 = 0, z1 = 0;
+      rng.normal_pair(z0, z1);
+      w = z0 * std::sqrt(species.spin.temperature / moment);
+    }
+    omega.push_back(w);
+    inertia.push_back(moment);
+  }
+}
+
 }  // namespace ede::setup_detail

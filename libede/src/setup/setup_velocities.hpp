@@ -20,4 +20,10 @@ namespace ede::setup_detail {
 void assign_velocities(const VelocitySpec& spec, const std::vector<double>& mass, Rng& rng,
                        std::vector<double>& vx, std::vector<double>& vy);
 
+// Rough disks: appends each disk's moment of inertia I = f m r^2 and its initial angular velocity (the
+// species' spin rule) to inertia and omega. Maxwell takes one normal_pair per disk after the velocities
+// (omega from z0, z1 unused), so adding spin leaves every position and velocity as it was.
+void assign_spins(const SpeciesSpec& species, const std::vector<double>& mass, const std::vector<double>& radius,
+                  Rng& rng, std::vector<double>& omega, std::vector<double>& inertia);
+
 }  // namespace ede::setup_detail
