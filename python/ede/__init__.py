@@ -14,7 +14,7 @@ See docs/python.md.
 """
 from . import _ede
 from ._errors import CorruptLogError, Error, InvalidError, IoError, UnsupportedError
-from .analysis import Report, collision_series, crater, distribution, energy_series, pressure, species_stats
+from .analysis import Report, collision_series, crater, distribution, energy_series, impacts, pressure, species_stats
 from .export import export_gsd, export_xyz, frame_times
 from .log import EVENT_KINDS, Log, open
 from .run import Simulation, load_scene, resume, run
@@ -27,7 +27,7 @@ from .structure import (bond_order, contact_values, enskog_diffusion, henderson_
 __version__ = _ede.version()
 
 __all__ = ["CorruptLogError", "Error", "InvalidError", "IoError", "UnsupportedError", "Report",
-           "collision_series", "crater", "distribution", "energy_series", "pressure", "species_stats",
+           "collision_series", "crater", "distribution", "energy_series", "impacts", "pressure", "species_stats",
            "export_gsd", "export_xyz", "frame_times", "EVENT_KINDS", "Log", "open", "Simulation",
            "load_scene", "resume", "run", "State", "sweep", "sweep_program", "sweep_tables", "bond_order",
            "contact_values", "enskog_diffusion", "henderson_contact", "kolafa_rottner_contact", "kolafa_rottner_z",

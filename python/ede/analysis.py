@@ -3,7 +3,7 @@ numpy arrays: speed/energy distributions with the 2D Maxwell-Boltzmann law and t
 series per species with Haff's law, collision statistics, species tables, pressure, crater metrics."""
 from . import _ede
 
-__all__ = ["Report", "distribution", "energy_series", "collision_series", "species_stats", "pressure", "crater"]
+__all__ = ["Report", "distribution", "energy_series", "collision_series", "impacts", "species_stats", "pressure", "crater"]
 
 
 class Report(dict):
@@ -51,6 +51,14 @@ def collision_series(log, times):
     """Collision counts, the pair collision rate per disk, the mean free time and the GasLab speed classes
     at the given times (as ede-stats collisions)."""
     return _report(_ede.collision_series(_log(log), times))
+
+
+def impacts(log, *, t0=None, t1=None, bins=20):
+    """Pair collisions in [t0, t1] (as ede-stats impacts): histograms of |b|/(r_i + r_j) (impact_edges,
+    impact_count, impact_density; the law is 1) and of the relative speed g (speed_edges, speed_count,
+    speed_density, speed_law: the flux-weighted Maxwellian), KS tests (impact_ks against U(0, 1), speed_ks of
+    mu g^2/2kT against Gamma(3/2)), kT at t0, mean |b|/sigma, g and impulses (docs/analysis.md)."""
+    return _report(_ede.impacts(_log(log), t0, t1, int(bins)))
 
 
 def species_stats(log, times):

@@ -68,16 +68,22 @@ class Log:
         for t in times:
             yield self.state(t)
 
-    def events(self, t0=None, t1=None, *, first=None, last=None, positions=False, before=False, impulse=False):
+    def events(self, t0=None, t1=None, *, first=None, last=None, positions=False, before=False, impulse=False,
+               collision=False):
         """The logged events with t0 <= time <= t1 (and index in [first, last)) as a numpy structured
         array: index, time, kind (EVENT_KINDS[kind]), i, j, and the velocities after the event vix, viy,
         vjx, vjy; with positions=True also xi, yi, xj, yj (at the event), before=True the velocities just
         before (vix_before, ...), impulse=True the impulse on disk i (px, py = m_i (v_i' - v_i)).
-        Reals are in the log's scalar type. j is the partner (pair), the wall (wall) or the edge (wrap)."""
+        collision=True adds, in float64, the collision's statistics (docs/analysis.md): impulse (|m_i (v_i' - v_i)|),
+        impact_parameter (b / (r_i + r_j), signed; pairs), relative_speed (|v_i - v_j| before; walls: |v_i|),
+        normal_speed (the approach speed before; walls: |v_i . n|) and tangential_speed (signed; pairs);
+        0 where an event has none (wraps, actions). Reals are otherwise in the log's scalar type. j is the
+        partner (pair), the wall (wall) or the edge (wrap)."""
         for name, v in (("first", first), ("last", last)):
             if v is not None and (isinstance(v, bool) or not hasattr(v, "__index__")):
                 raise TypeError("events(%s=...): expected an int, got %s" % (name, type(v).__name__))
-        return _ede.events(self._log, t0, t1, first, last, bool(positions), bool(before), bool(impulse))
+        return _ede.events(self._log, t0, t1, first, last, bool(positions), bool(before), bool(impulse),
+                           bool(collision))
 
     def count_events(self):
         """Events by kind, from the log's kind columns (no replay)."""

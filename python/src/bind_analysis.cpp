@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "bindings.hpp"
+#include "ede/collision_stats.hpp"
 
 namespace ede::python {
 
@@ -109,6 +110,23 @@ void bind_analysis(py::module_& m) {
     for (const SpeedClasses& k : c.classes)
       slow.push_back(k.slow_percent), medium.push_back(k.medium_percent), fast.push_back(k.fast_percent);
     d["slow_percent"] = arr(slow), d["medium_percent"] = arr(medium), d["fast_percent"] = arr(fast);
+    return d;
+  });
+  m.def("impacts", [](const Log& log, py::object from, py::object to, std::size_t bins) {
+    ImpactRequest r;
+    if (!from.is_none()) r.range.from_time = from.cast<double>();
+    if (!to.is_none()) r.range.to_time = to.cast<double>();
+    r.bins = bins;
+    const ImpactStatistics s = released([&] { return impact_statistics(log, r); });
+    py::dict d;
+    d["pair_collisions"] = s.pair_collisions, d["wall_collisions"] = s.wall_collisions, d["kT"] = s.kT;
+    d["impact_edges"] = arr(s.impact.edges), d["impact_count"] = arr(s.impact.count);
+    d["impact_density"] = arr(s.impact_density);
+    d["speed_edges"] = arr(s.speed.edges), d["speed_count"] = arr(s.speed.count);
+    d["speed_density"] = arr(s.speed_density), d["speed_law"] = arr(s.speed_law);
+    d["impact_ks"] = ks_dict(s.impact_ks), d["speed_ks"] = ks_dict(s.speed_ks);
+    d["mean_impact"] = s.mean_impact, d["mean_speed"] = s.mean_speed;
+    d["mean_impulse"] = s.mean_impulse, d["mean_wall_impulse"] = s.mean_wall_impulse, d["truncated"] = s.truncated;
     return d;
   });
   m.def("species_stats", [](const Log& log, py::object times) {

@@ -53,6 +53,20 @@ def test_collision_series_equals_ede_stats_collisions(gas_log, tmp_path):
     np.testing.assert_array_equal(c.fast_percent, ref["fast_percent"])
 
 
+def test_impacts_equal_ede_stats_impacts(gas_log, tmp_path):
+    out = tmp_path / "i.csv"
+    tool("ede-stats", "impacts", gas_log, "--from", 0.5, "--bins", 12, "-o", out)
+    ref = table(out)
+    i = ede.impacts(ede.open(gas_log), t0=0.5, bins=12)
+    np.testing.assert_array_equal(i.impact_edges[:-1], ref["b_left"])
+    np.testing.assert_array_equal(i.impact_density, ref["b_density"])
+    np.testing.assert_array_equal(i.speed_edges[1:], ref["g_right"])
+    np.testing.assert_array_equal(i.speed_density, ref["g_density"])
+    np.testing.assert_array_equal(i.speed_law, ref["g_law"])
+    assert i.pair_collisions == i.impact_count.sum() > 100
+    assert 0 <= i.impact_ks.p_value <= 1 and 0 <= i.speed_ks.p_value <= 1
+
+
 def test_species_stats_equal_ede_stats_species(gas_log, tmp_path):
     out = tmp_path / "s.csv"
     tool("ede-stats", "species", gas_log, "--at", 0.4, "-o", out)

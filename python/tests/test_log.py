@@ -69,8 +69,10 @@ def test_state_arrays_are_views_that_outlive_the_log(gas_log):
 
 def test_events_are_the_rows_of_ede_replay_events(gas_log):
     log = ede.open(gas_log)
-    ev = log.events(0.1, 0.2, positions=True, before=True)
+    ev = log.events(0.1, 0.2, positions=True, before=True, collision=True)
     ref = replay_csv("events", gas_log, "--from", 0.1, "--to", 0.2, "--full")
+    for k in ("impulse", "impact_parameter", "relative_speed", "normal_speed", "tangential_speed"):
+        assert k in ev.dtype.names and k in ref  # compared below, bit for bit, with the CLI's columns
     assert len(ev) == len(ref["index"]) > 50
     np.testing.assert_array_equal(ev["index"], np.array([int(v) for v in ref["index"]]))
     np.testing.assert_array_equal(ev["time"], np.array([float(v) for v in ref["time"]]))
@@ -100,6 +102,22 @@ def test_impulses_conserve_momentum_in_pair_collisions(gas_log):
     np.testing.assert_allclose(pairs["px"], -pj, rtol=0, atol=1e-12)
     walls = ev[ev["kind"] == 1]
     np.testing.assert_array_equal(walls["px"], mass[walls["i"]] * (walls["vix"] - walls["vix_before"]))
+
+
+def test_collision_fields_are_the_impulse_and_geometry_of_each_collision(gas_log):
+    log = ede.open(gas_log)
+    ev = log.events(impulse=True, collision=True)
+    pairs = ev[ev["kind"] == 0]
+    assert len(pairs) > 100
+    np.testing.assert_allclose(pairs["impulse"], np.hypot(pairs["px"], pairs["py"]), rtol=1e-12)
+    assert np.all(np.abs(pairs["impact_parameter"]) <= 1 + 1e-12)
+    assert np.all(pairs["normal_speed"] > 0)
+    np.testing.assert_allclose(pairs["normal_speed"] ** 2 + pairs["tangential_speed"] ** 2,
+                               pairs["relative_speed"] ** 2, rtol=1e-9)
+    # Smooth elastic collisions: |J| = 2 mu g_n, mu = m_i m_j / (m_i + m_j) (masses 1 and 4 here).
+    mass = log.state(0.0).mass
+    mi, mj = mass[pairs["i"]], mass[pairs["j"]]
+    np.testing.assert_allclose(pairs["impulse"], 2 * mi * mj / (mi + mj) * pairs["normal_speed"], rtol=1e-9)
 
 
 def test_wrong_argument_types_raise_type_errors(gas_log):

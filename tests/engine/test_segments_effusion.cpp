@@ -15,36 +15,16 @@
 
 #include "ede/scene.hpp"
 #include "ede/simulation.hpp"
+#include "scene_test_support.hpp"
 
 TEST_CASE("segment effusion: the rate through a small hole matches kinetic theory", "[segment][statistical]") {
   const double hole = 0.05, r = 0.0005, area = 1.0, t_end = 10.0;
-  const std::string text = R"(
-[box]
-size = [2.0, 1.0]
-[[species]]
-name = "gas"
-count = 2000
-radius = 0.0005
-[species.placement]
-kind = "random"
-region = [0.0, 0.0, 1.0, 1.0]
-[species.velocity]
-kind = "maxwell"
-temperature = 1.0
-[[walls.segments]]
-from = [1.0, 0.0]
-to = [1.0, 0.475]
-[[walls.segments]]
-from = [1.0, 0.525]
-to = [1.0, 1.0]
-[stop]
-time = 10.0
-)";
+  ede::test::GasToml gas = ede::test::left_half_gas("2000", "0.0005");
+  gas.seed = "", gas.stop = "time = 10.0";
+  const std::string text = gas.text() + ede::test::divider_toml("0.475", "0.525");
   double measured = 0, expected = 0;
   for (int seed = 1; seed <= 8; ++seed) {
-    auto scene = ede::parse_scene_text(text, "effusion.toml", {ede::Override{"seed=" + std::to_string(seed)}});
-    REQUIRE(scene.ok());
-    auto sim = ede::Simulation::create(scene.value());
+    auto sim = ede::Simulation::create(ede::test::scene_of(text, "effusion.toml", {{"seed=" + std::to_string(seed)}}));
     REQUIRE(sim.ok());
     REQUIRE(sim.value().run() == ede::RunStatus::ReachedTime);
     const ede::State s = sim.value().state();

@@ -9,6 +9,7 @@
 #include "ede/simulation.hpp"
 #include "log_test_support.hpp"
 #include "reference_reader.hpp"
+#include "scene_test_support.hpp"
 
 using namespace ede;
 using namespace ede::test;
@@ -96,40 +97,10 @@ TEST_CASE("segment log: segment events cost about what wall events do", "[log][s
 }
 
 TEST_CASE("segment log: ede's verify reruns a segment scene identically", "[log][segment]") {
-  const std::string text = R"(seed = 11
-[box]
-size = [2.0, 1.0]
-[[species]]
-name = "gas"
-count = 300
-radius = 0.004
-[species.placement]
-kind = "random"
-region = [0.0, 0.0, 1.0, 1.0]
-[species.velocity]
-kind = "maxwell"
-temperature = 1.0
-[stop]
-events = 30000
-[log]
-keyframe_interval = 5000
-[[walls.segments]]
-from = [1.0, 0.0]
-to = [1.0, 0.45]
-[[walls.segments]]
-from = [1.0, 0.55]
-to = [1.0, 1.0]
-restitution = 0.9
-)";
-  auto scene = parse_scene_text(text, "divider.toml");
-  REQUIRE(scene.ok());
-  const std::string path = temp_path("segments-verify.ede");
-  {
-    auto sim = Simulation::create(scene.value(), {path, {}});
-    REQUIRE(sim.ok());
-    CHECK(sim.value().run() == RunStatus::ReachedEvents);
-    REQUIRE(sim.value().close().ok());
-  }
+  GasToml gas = left_half_gas("300", "0.004");
+  gas.seed = "11", gas.stop = "events = 30000\n[log]\nkeyframe_interval = 5000";
+  const std::string text = gas.text() + divider_toml("0.45", "0.55", "restitution = 0.9\n");
+  const std::string path = run_to_log(scene_of(text, "divider.toml"), "segments-verify.ede", RunStatus::ReachedEvents);
   auto log = Log::open(path);
   REQUIRE(log.ok());
   auto report = log.value().verify();

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "ede/ede.hpp"
+#include "scene_test_support.hpp"  // scene_of, run_to_log
 #include "tool_runner.hpp"  // temp_path
 
 using ede::test::temp_path;
@@ -33,12 +34,7 @@ time = 1.0
 )";
 
 ede::Log logged(const std::string& name, const std::vector<ede::Override>& overrides = {}) {
-  const std::string path = temp_path(name);
-  auto sim = ede::Simulation::create(ede::parse_scene_text(kScene, "log-test", overrides).value(), {.log_path = path})
-                 .value();
-  REQUIRE(is_finished(sim.run()));
-  REQUIRE(sim.close());
-  return ede::Log::open(path).value();
+  return ede::Log::open(ede::test::run_to_log(ede::test::scene_of(kScene, "log-test", overrides), name)).value();
 }
 
 }  // namespace

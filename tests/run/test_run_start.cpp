@@ -11,33 +11,15 @@
 
 #include "ede/ede.hpp"
 #include "setup/setup_from_csv.hpp"
+#include "scene_test_support.hpp"  // GasToml, run_to_log
 #include "tool_runner.hpp"  // temp_path, read_file
 
+using ede::test::run_to_log;
 using ede::test::temp_path;
 
 namespace {
 
-const char* kGas = R"(seed = 5
-[box]
-size = [1.0, 1.0]
-[[species]]
-name = "gas"
-count = 400
-radius = 0.01
-[species.velocity]
-kind = "speed"
-speed = 1.0
-[stop]
-time = 1.0
-)";
-
-std::string run_to_log(const ede::Scene& scene, const std::string& name) {
-  const std::string path = temp_path(name);
-  auto sim = ede::Simulation::create(scene, {.log_path = path}).value();
-  sim.run();
-  REQUIRE(sim.close());
-  return path;
-}
+const std::string kGas = ede::test::GasToml{}.text();  // 400 disks, r = 0.01, speed 1, t = 1
 
 double max_position_difference(const ede::State& a, const ede::State& b) {
   REQUIRE(a.size() == b.size());

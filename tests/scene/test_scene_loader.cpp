@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "ede/scene.hpp"
+#include "scene_test_support.hpp"
 
 namespace {
 
@@ -43,18 +44,13 @@ std::string with(std::string text, const std::string& from, const std::string& t
 }
 
 Scene load(const std::string& text, const std::vector<Override>& overrides = {}) {
-  auto result = ede::parse_scene_text(text, "scene.toml", overrides);
-  if (!result) FAIL(result.error().message);
-  return std::move(result).value();
+  return ede::test::scene_of(text, "scene.toml", overrides);
 }
 
 std::string error_of(const std::string& text, const std::vector<Override>& overrides = {}) {
-  auto result = ede::parse_scene_text(text, "scene.toml", overrides);
-  REQUIRE_FALSE(result.ok());
-  INFO(result.error().message);
-  CHECK_THAT(result.error().message, Contains(": error: "));
-  CHECK_THAT(result.error().message, Contains("Fix: "));
-  return result.error().message;
+  const std::string message = ede::test::scene_error(text, "scene.toml", overrides);  // refused, with a fix
+  CHECK_THAT(message, Contains(": error: "));
+  return message;
 }
 
 std::string num(double v) {

@@ -5,34 +5,24 @@
 
 #include "core/segment.hpp"
 #include "ede/scene.hpp"
+#include "scene_test_support.hpp"
 #include "setup/setup.hpp"
 
 namespace {
 
 using Catch::Matchers::Contains;
 
-const std::string kScene = R"(seed = 3
-[box]
-size = [2.0, 1.0]
-[[species]]
-name = "gas"
-count = 400
-radius = 0.01
-placement = { kind = "random" }
-[species.velocity]
-kind = "speed"
-speed = 1.0
-[stop]
-time = 1.0
-)";
+// 400 disks of radius 0.01 at speed 1, placed at random in a [2, 1] box.
+const std::string kScene = [] {
+  ede::test::GasToml g;
+  g.seed = "3", g.size = "[2.0, 1.0]", g.placement = "kind = \"random\"";
+  return g.text();
+}();
 
 std::string error_of(const std::string& text) {
-  auto result = ede::parse_scene_text(text, "scene.toml");
-  REQUIRE_FALSE(result.ok());
-  INFO(result.error().message);
-  CHECK_THAT(result.error().message, Contains("scene.toml:"));
-  CHECK_THAT(result.error().message, Contains("Fix: "));
-  return result.error().message;
+  const std::string message = ede::test::scene_error(text);  // refused, with a fix
+  CHECK_THAT(message, Contains("scene.toml:"));
+  return message;
 }
 
 }  // namespace

@@ -6,22 +6,13 @@
 #include <string>
 
 #include "ede/ede.hpp"
+#include "scene_test_support.hpp"  // scene_of, run_to_log
 #include "tool_runner.hpp"  // temp_path
 
 namespace ede::test {
 
 inline Log public_log(const std::string& toml, const std::string& file) {
-  auto scene = parse_scene_text(toml, file);
-  INFO((scene ? "" : scene.error().message));
-  REQUIRE(scene);
-  SimulationOptions options;
-  options.log_path = temp_path(file);
-  auto sim = Simulation::create(scene.value(), options);
-  INFO((sim ? "" : sim.error().message));
-  REQUIRE(sim);
-  sim.value().run();
-  REQUIRE(sim.value().close());
-  auto log = Log::open(options.log_path);
+  auto log = Log::open(run_to_log(scene_of(toml, file), file));
   REQUIRE(log);
   return std::move(log).value();
 }

@@ -107,7 +107,8 @@ TEST_CASE("every log tool refuses bad logs clearly and reads cut ones with a war
       {"ede-replay", "events {} --from 0 --to 1"}, {"ede-replay", "verify {}"},
       {"ede-stats", "hist {}"},                    {"ede-stats", "species {}"},
       {"ede-stats", "energy {}"},                  {"ede-stats", "collisions {}"},
-      {"ede-stats", "pressure {}"},                {"ede-crater", "{}"},
+      {"ede-stats", "pressure {}"},                {"ede-stats", "impacts {}"},
+      {"ede-replay", "events {} --full --to 1"},   {"ede-crater", "{}"},
       {"ede-render", "{} --at end -o /dev/null.png"}};
   for (const BadLog& log : make_bad_logs()) {
     for (const auto& [tool, pattern] : commands) {

@@ -5,6 +5,7 @@
 // keyframe intervals so that every log has several of each and seeks cross keyframes.
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <memory>
@@ -236,6 +237,39 @@ TEST_CASE("ede-replay events lists a time or index range exactly", "[tool][ede-r
     CHECK(walls > 0);
     CHECK(actions == 1);
   }
+}
+
+TEST_CASE("ede-replay events --full: positions, velocities before, impulse, impact parameter and relative speeds",
+          "[tool][ede-replay]") {
+  const std::string log = make_log("events-full.ede", "examples/scenes/time-reversal.toml",
+                                   " --set species.gas.count=100 --set stop.time=1" + kSmallRecords);
+  const ToolRun r = replay("events " + log + " --full", "events-full");
+  REQUIRE(r.status == 0);
+  const auto rows = lines(r.out);
+  REQUIRE(rows[0] == "index,time,kind,i,j,vix,viy,vjx,vjy,xi,yi,xj,yj,vix_before,viy_before,vjx_before,vjy_before,"
+                     "impulse_x,impulse_y,impulse,impact_parameter,relative_speed,normal_speed,tangential_speed");
+  const auto num = [](const std::string& s) { return std::strtod(s.c_str(), nullptr); };
+  int pairs = 0, walls = 0;
+  for (std::size_t k = 1; k < rows.size(); ++k) {
+    auto f = csv_fields(rows[k]);
+    f.resize(24);
+    if (f[2] == "pair") {
+      ++pairs;
+      // The impulse is m_i (v_i' - v_i) (unit masses here), b in [-1, 1], g_n > 0 and g_n^2 + g_t^2 = g^2.
+      CHECK(num(f[17]) == Approx(num(f[5]) - num(f[13])).margin(1e-12));
+      CHECK(num(f[18]) == Approx(num(f[6]) - num(f[14])).margin(1e-12));
+      CHECK(std::fabs(num(f[20])) <= 1 + 1e-12);
+      CHECK(num(f[22]) > 0);
+      CHECK(num(f[22]) * num(f[22]) + num(f[23]) * num(f[23]) == Approx(num(f[21]) * num(f[21])).epsilon(1e-9));
+    } else if (f[2] == "wall") {
+      ++walls;
+      CHECK(!f[19].empty());
+      CHECK((f[20].empty() && f[23].empty()));
+      CHECK(num(f[19]) == Approx(2 * num(f[22])).epsilon(1e-12));  // elastic wall: |J| = 2 m |v_n|
+    }
+  }
+  CHECK(pairs > 50);
+  CHECK(walls > 5);
 }
 
 TEST_CASE("ede-replay verify re-runs a log's scene and finds it identical", "[tool][ede-replay]") {

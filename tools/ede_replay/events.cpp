@@ -5,11 +5,19 @@
 // 3 top) or the wrap direction (0 right, 1 left, 2 top, 3 bottom: the edge crossed); the velocities are
 // the post-event ones (pair: both disks; wall: disk i). Columns a kind does not have are empty. Numbers
 // are exact (float 9, double 17, long double 21 digits). --full adds the positions at the event and the
-// velocities before it: xi,yi,xj,yj,vix_before,viy_before,vjx_before,vjy_before.
+// velocities before it: xi,yi,xj,yj,vix_before,viy_before,vjx_before,vjy_before, then the collision's
+// statistics (ede/collision_stats.hpp, in double, 17 digits): impulse_x,impulse_y,impulse (on disk i,
+// m_i (v_i' - v_i); pair, wall, segment), impact_parameter (b / (r_i + r_j), signed; pair), relative_speed
+// (|v_i - v_j| before; wall, segment: |v_i|), normal_speed (approach speed; wall, segment: |v_i . n|),
+// tangential_speed (signed; pair). Rejected: a separate --collisions flag, one more flag for what --full
+// already means (everything known about an event).
 // A time range [T0, T1] seeks to the state just before T0 from the nearest keyframe, then reads events
 // until one is later than T1: the cost is the range, not the log.
 #include <optional>
 
+#include "ede/collision_stats.hpp"
+
+#include "number_text.hpp"
 #include "output_file.hpp"
 #include "replay_tool.hpp"
 
@@ -29,7 +37,16 @@ bool has_disk(EventKind k) {
 bool has_vi(EventKind k) { return k == EventKind::Pair || k == EventKind::Wall || k == EventKind::Segment; }
 
 // One row; the columns an event kind does not have are left empty.
-std::string row(const Log& log, const Event& e, bool full) {
+// The collision's statistics (empty for wraps and actions; pair-only fields empty for walls).
+std::string statistics(const CollisionRecord& c) {
+  const auto d = [](double v) { return tools::exact(v); };
+  if (!c.pair && !c.wall) return ",,,,,,";
+  return d(c.impulse_x) + "," + d(c.impulse_y) + "," + d(c.impulse) + "," + (c.pair ? d(c.impact_parameter) : "") + "," +
+         d(c.relative_speed) + "," + d(c.normal_speed) + "," + (c.pair ? d(c.tangential_speed) : "");
+}
+
+std::string row(const Log& log, const Event& e, const CollisionDisks* disks) {
+  const bool full = disks != nullptr;
   const auto x = [&](Time v) { return exact(log, v); };
   const auto two = [](const std::string& a, const std::string& b) { return a + "," + b; };
   const bool pair = e.kind == EventKind::Pair;
@@ -39,7 +56,7 @@ std::string row(const Log& log, const Event& e, bool full) {
   if (full)
     s += "," + (has_disk(e.kind) ? two(x(e.xi), x(e.yi)) : ",") + "," + (pair ? two(x(e.xj), x(e.yj)) : ",") + "," +
          (has_disk(e.kind) ? two(x(e.vix_before), x(e.viy_before)) : ",") + "," +
-         (pair ? two(x(e.vjx_before), x(e.vjy_before)) : ",");
+         (pair ? two(x(e.vjx_before), x(e.vjy_before)) : ",") + "," + statistics(collision_record(e, *disks));
   return s + "\n";
 }
 
@@ -72,11 +89,18 @@ int run_events(const EventsOptions& opt) {
   tools::Output output(opt.output);  // a temporary renamed into place once complete; stdout without -o
   std::FILE* out = output.file();
   if (!out) return fail(output.error());
-  std::fputs(opt.full ? "index,time,kind,i,j,vix,viy,vjx,vjy,xi,yi,xj,yj,vix_before,viy_before,vjx_before,vjy_before\n"
+  std::optional<CollisionDisks> disks;
+  if (opt.full) {
+    auto d = collision_disks(log.value());
+    if (!d) return fail(d.error().message);
+    disks = std::move(d).value();
+  }
+  std::fputs(opt.full ? "index,time,kind,i,j,vix,viy,vjx,vjy,xi,yi,xj,yj,vix_before,viy_before,vjx_before,vjy_before,"
+                        "impulse_x,impulse_y,impulse,impact_parameter,relative_speed,normal_speed,tangential_speed\n"
                       : "index,time,kind,i,j,vix,viy,vjx,vjy\n",
              out);
   const Status s = log.value().for_each_event(range.value(), [&](const Event& e) {
-    std::fputs(row(log.value(), e, opt.full).c_str(), out);
+    std::fputs(row(log.value(), e, disks ? &*disks : nullptr).c_str(), out);
     return std::ferror(out) == 0;  // a full disk ends the walk; close() names the file
   });
   if (!s) return fail(s.error().message);
@@ -90,7 +114,8 @@ Command add_events_command(CLI::App& app) {
   auto opt = std::make_shared<EventsOptions>();
   CLI::App* cmd = app.add_subcommand("events",
                                      "the logged events in a range, as CSV: "
-                                     "index,time,kind,i,j,vix,viy,vjx,vjy (--full: positions and velocities before)");
+                                     "index,time,kind,i,j,vix,viy,vjx,vjy (--full: positions, velocities before, impulse, "
+                                     "impact parameter, relative speeds)");
   cmd->add_option("log", opt->log, "event log (any file name)")->required();
   auto* from =
       cmd->add_option("--from", opt->from, "first time T0 (events with T0 <= time), exact in the log's scalar type");
@@ -99,7 +124,9 @@ Command add_events_command(CLI::App& app) {
   auto* to_event = cmd->add_option("--to-event", opt->to_event, "last event index (included)");
   for (auto* by_time : {from, to})
     for (auto* by_index : {from_event, to_event}) by_time->excludes(by_index);
-  cmd->add_flag("--full", opt->full, "add the positions at each event and the velocities just before it");
+  cmd->add_flag("--full", opt->full,
+                "add the positions at each event, the velocities just before it and the collision's impulse on disk i, "
+                "impact parameter b/(r_i+r_j) and relative speeds before (docs/cli.md)");
   cmd->add_option("-o,--output", opt->output, "write to this file instead of stdout");
   return [opt] { return run_events(*opt); };
 }

@@ -20,7 +20,7 @@ static int run_main(int argc, char** argv) {
   const std::vector<std::pair<std::string, Command>> commands = {
       {"hist", add_hist_command(app)},         {"species", add_species_command(app)},
       {"energy", add_energy_command(app)},     {"collisions", add_collisions_command(app)},
-      {"pressure", add_pressure_command(app)},
+      {"pressure", add_pressure_command(app)}, {"impacts", add_impacts_command(app)},
       {"gr", add_gr_command(app)},             {"sk", add_sk_command(app)},
       {"psi6", add_psi6_command(app)},         {"msd", add_msd_command(app)},
       {"vacf", add_vacf_command(app)},

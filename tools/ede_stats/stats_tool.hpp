@@ -15,6 +15,7 @@ Command add_hist_command(CLI::App& app);        // speed and energy histograms, 
 Command add_species_command(CLI::App& app);     // per-species mean speed, energy, temperature
 Command add_energy_command(CLI::App& app);      // kinetic energy on a fine time grid
 Command add_collisions_command(CLI::App& app);  // collisions per disk, rate, mean free time, speed classes
+Command add_impacts_command(CLI::App& app);     // impact parameter and relative speed at collision, KS tests
 Command add_pressure_command(CLI::App& app);    // pressure from the walls and from the virial
 Command add_gr_command(CLI::App& app);          // pair correlation g(r), contact value g(sigma)
 Command add_sk_command(CLI::App& app);          // static structure factor S(k)

@@ -117,8 +117,11 @@ int finish_table(const std::string& command, const TableOutput& out, const Summa
   return write_csv_and_plot({.output = out.output,
                              .plot = out.plot,
                              .csv = t.csv(),
-                             .script = "plot_table.py",
-                             .args = {out.plot, f.x, f.ys, f.error, f.dashed, f.title, f.xlabel, f.ylabel, f.scale},
+                             .script = f.script,
+                             .args = f.script == "plot_table.py"
+                                         ? std::vector<std::string>{out.plot, f.x, f.ys, f.error, f.dashed, f.title,
+                                                                    f.xlabel, f.ylabel, f.scale}
+                                         : std::vector<std::string>{out.plot, f.title},
                              .figure_label = out.json ? "" : "figure           "});
 }
 

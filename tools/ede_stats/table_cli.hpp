@@ -50,8 +50,10 @@ struct TableOutput {
 
 // The figure plot_table.py draws: x against the y columns (with an error column, maybe), linear or
 // log-log of |y|, and reference curves (columns named in `dashed`).
+// Another script (e.g. plot_impacts.py, two panels) takes the CSV, the figure's path and the title only.
 struct Figure {
   std::string x = {}, ys = {}, error = {}, dashed = {}, title = {}, xlabel = {}, ylabel = {}, scale = "linear";
+  std::string script = "plot_table.py";
 };
 
 bool plot_name_ok(const std::string& path);

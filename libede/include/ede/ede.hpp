@@ -16,6 +16,7 @@
 #pragma once
 
 #include "ede/analysis.hpp"
+#include "ede/collision_stats.hpp"
 #include "ede/crater.hpp"
 #include "ede/error.hpp"
 #include "ede/events.hpp"

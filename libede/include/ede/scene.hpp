@@ -96,9 +96,13 @@ struct StopSpec {  // the run ends at the first condition met; at least one must
 
 enum class ActionKind { ReverseVelocities };
 
+// An action happens at a time, or (collisions_per_disk set, time 0) right after the pair collision at
+// which the collisions per disk, 2 P / N with P the pair collisions so far, first reach the value:
+// the first P with 2 P >= k N (in double), at that collision's time, before any other event.
 struct ActionSpec {
   double time = 0;
   ActionKind kind = ActionKind::ReverseVelocities;
+  std::optional<double> collisions_per_disk;
 };
 
 struct PairRestitution {  // the restitution between disks of two species (by name), overriding the default
@@ -201,7 +205,9 @@ struct Scene {
   std::optional<GrowSpec> grow;      // dense start by growth (with [[species]] only)
   StopSpec stop;
   std::optional<double> sample_interval;  // observers see the exact state at k * interval, k = 1, 2, ...
-  std::vector<ActionSpec> actions;        // sorted by time
+  // Or: observers see the state right after the pair collision at which 2 P / N first reaches k * this.
+  std::optional<double> sample_collisions;
+  std::vector<ActionSpec> actions;        // sorted by time, or all by collisions_per_disk and sorted by it
 
   // The disks carry an angular velocity: some contact is rough or some species starts spinning. Such a
   // run has omega and I per disk in its state and log; any other run is exactly what it was before.

@@ -35,7 +35,8 @@ struct EngineOptions {
   PhysicsSpec physics;
   StopSpec stop;
   std::optional<double> sample_interval;
-  std::vector<ActionSpec> actions;      // sorted by time
+  std::optional<double> sample_collisions;  // or samples every this many collisions per disk (Scene::sample_collisions)
+  std::vector<ActionSpec> actions;      // sorted by time (or all by collisions_per_disk, sorted by it)
   Algorithm algorithm = Algorithm::Cells;
   // Every this many events the predictions are rebuilt from the state alone, a point a run can be resumed
   // from bit for bit (0: only at start and after actions). Changes round-off, so it is part of a run's

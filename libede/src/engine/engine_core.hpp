@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -100,6 +101,7 @@ class Engine final : public EngineApi<T> {
     if (options.stop.collisions_per_particle)
       pairs_to_stop_ = static_cast<std::uint64_t>(std::ceil(*options.stop.collisions_per_particle * double(p_.size()) / 2));
     if (resume) restore(*resume);
+    next_pair_target_ = pair_target();
   }
 
   void add_sink(Sink<T>* sink) override { sinks_.push_back(sink); }
@@ -159,6 +161,7 @@ class Engine final : public EngineApi<T> {
       if (next.time <= t_sample && next.time <= t_action && next.time <= t_limit && next.time != kNever<T>) {
         if (!process_disk_event(next)) continue;  // stale prediction: not an event
         ++done;
+        if (counts_.of(EventKind::Pair) >= next_pair_target_) done += on_pair_target();
         if (const RunStatus s = check_stops(); s != RunStatus::Running) return finish(s);
         if (opt_.rebuild_interval && counts_.events() % opt_.rebuild_interval == 0) rebuild();
       } else if (t_action != kNever<T> && t_action <= t_sample && t_action <= t_limit) {
@@ -825,7 +828,37 @@ class Engine final : public EngineApi<T> {
     return T(double(next_sample_index_ + 1) * *opt_.sample_interval);
   }
   T next_action_time() const {
-    return next_action_index_ < opt_.actions.size() ? T(opt_.actions[next_action_index_].time) : kNever<T>;
+    if (next_action_index_ >= opt_.actions.size() || opt_.actions[next_action_index_].collisions_per_disk) return kNever<T>;
+    return T(opt_.actions[next_action_index_].time);
+  }
+
+  // Actions and samples by collisions per disk (Scene::actions, Scene::sample_collisions): one happens
+  // right after the pair collision that brings the pair count P to ceil(c N / 2) (c: its collisions per
+  // disk; the k-th sample's c is k times the interval), at that collision's time, before the next event.
+  // The loop compares P with next_pair_target_, the nearest such count (never: the largest integer), so a
+  // scene without them pays one comparison per event.
+  std::uint64_t pairs_for(double collisions_per_disk) const {
+    return static_cast<std::uint64_t>(std::ceil(collisions_per_disk * double(p_.size()) / 2));
+  }
+  std::uint64_t pair_target() const {
+    std::uint64_t target = std::numeric_limits<std::uint64_t>::max();
+    if (next_action_index_ < opt_.actions.size())
+      if (const auto& c = opt_.actions[next_action_index_].collisions_per_disk) target = pairs_for(*c);
+    if (opt_.sample_collisions)
+      target = std::min(target, pairs_for(double(next_sample_index_ + 1) * *opt_.sample_collisions));
+    return target;
+  }
+  // Every action, then every sample, whose target the pair count has reached; the events it processed.
+  std::uint64_t on_pair_target() {
+    const std::uint64_t pairs = counts_.of(EventKind::Pair);
+    std::uint64_t done = 0;
+    while (next_action_index_ < opt_.actions.size() && opt_.actions[next_action_index_].collisions_per_disk &&
+           pairs >= pairs_for(*opt_.actions[next_action_index_].collisions_per_disk))
+      reverse_velocities(now_), ++done;
+    while (opt_.sample_collisions && pairs >= pairs_for(double(next_sample_index_ + 1) * *opt_.sample_collisions))
+      sample(now_), ++done;
+    next_pair_target_ = pair_target();
+    return done;
   }
 
   // An inelastic run that cools for ever (a wall restitution of 0.1 divides a speed by 10 per bounce)
@@ -1011,6 +1044,7 @@ class Engine final : public EngineApi<T> {
   T stop_time_ = kNever<T>;
   double ke0_ = 0, ke_ = 0;
   std::uint64_t pairs_to_stop_ = 0;
+  std::uint64_t next_pair_target_ = std::numeric_limits<std::uint64_t>::max();  // pair_target()
   std::uint64_t next_sample_index_ = 0;
   std::size_t next_action_index_ = 0;
   std::uint64_t same_time_events_ = 0, stall_limit_ = 0;

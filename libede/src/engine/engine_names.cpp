@@ -91,6 +91,7 @@ EngineOptions engine_options_from(const Scene& scene, std::size_t disks) {
   o.physics = scene.physics;
   o.stop = scene.stop;
   o.sample_interval = scene.sample_interval;
+  o.sample_collisions = scene.sample_collisions;
   o.actions = scene.actions;
   o.rotation = scene.rotates();
   return o;

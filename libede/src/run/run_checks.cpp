@@ -79,6 +79,14 @@ Status check_run_can_finish(const Scene& scene, const InitialState& s) {
                    " samples, more than any run can take (the samples alone would take days or forever). Fix: "
                    "sample less often (a larger sampling.interval) or stop earlier."};
   }
+  if (scene.sample_collisions && scene.stop.collisions_per_particle) {
+    const double samples = *scene.stop.collisions_per_particle / *scene.sample_collisions;
+    if (!(samples <= kRefusedSamples))
+      return Error{scene.source_name + ": sampling.collisions_per_disk = " + num(*scene.sample_collisions) +
+                   " with stop.collisions_per_particle = " + num(*scene.stop.collisions_per_particle) + " asks for " +
+                   num(samples) + " samples, more than any run can take. Fix: sample less often (a larger "
+                   "sampling.collisions_per_disk) or stop earlier."};
+  }
   return Ok{};
 }
 

@@ -36,8 +36,8 @@ constexpr std::string_view kPlacementKeys[] = {"kind", "region", "packing_fracti
 constexpr std::string_view kVelocityKeys[] = {"kind", "speed", "vector", "temperature", "values"};
 constexpr std::string_view kGrowKeys[] = {"packing_fraction", "pressure", "rate"};
 constexpr std::string_view kStopKeys[] = {"time", "events", "collisions_per_particle", "energy_fraction"};
-constexpr std::string_view kSamplingKeys[] = {"interval"};
-constexpr std::string_view kActionKeys[] = {"time", "kind"};
+constexpr std::string_view kSamplingKeys[] = {"interval", "collisions_per_disk"};
+constexpr std::string_view kActionKeys[] = {"time", "collisions_per_disk", "kind"};
 constexpr std::string_view kStartKeys[] = {"from", "at", "csv", "digest", "zero_momentum", "reverse_velocities"};
 
 }  // namespace

@@ -534,10 +534,16 @@ StopSpec read_stop(const Reader& top) {
   return out;
 }
 
-std::optional<double> read_sampling(const Reader& top) {
+// interval (a time) or collisions_per_disk (2 P / N between samples), not both.
+void read_sampling(const Reader& top, Scene& scene) {
   const Reader s = top.section("sampling");
   s.check_keys(sections::sampling);
-  return s.number("interval", Bounds::positive(), "give a positive time between samples, e.g. 0.1");
+  scene.sample_interval = s.number("interval", Bounds::positive(), "give a positive time between samples, e.g. 0.1");
+  scene.sample_collisions =
+      s.number("collisions_per_disk", Bounds::positive(), "give a positive number of collisions per disk, e.g. 5");
+  if (scene.sample_interval && scene.sample_collisions)
+    s.fail("collisions_per_disk", "given with interval: samples are taken by time or by collisions per disk",
+           "keep one of interval and collisions_per_disk");
 }
 
 ActionSpec read_action(const toml::node& node, std::size_t i, const Reader& top) {
@@ -550,20 +556,33 @@ ActionSpec read_action(const toml::node& node, std::size_t i, const Reader& top)
   const Reader a(*table, path, top.origin());
   a.check_keys(sections::action);
   const auto time = a.number("time", Bounds::positive());
-  if (!time) missing(a, "time", "an action needs the time at which it happens", "time = 5.0");
+  const auto collisions = a.number("collisions_per_disk", Bounds::positive(), "give a positive number, e.g. 50");
+  if (!time && !collisions)
+    missing(a, "time", "an action needs the time (or the collisions per disk) at which it happens",
+            "time = 5.0 (or collisions_per_disk = 50)");
+  if (time && collisions)
+    a.fail("collisions_per_disk", "given with time: an action happens at a time or after a number of collisions per disk",
+           "keep one of time and collisions_per_disk");
   if (!a.choice("kind", {"reverse_velocities"})) {
     missing(a, "kind", "an action needs a kind", "kind = \"reverse_velocities\"");
   }
-  return {*time, ActionKind::ReverseVelocities};
+  return {time.value_or(0), ActionKind::ReverseVelocities, collisions};
 }
 
+// Time actions in time order, or collision actions in the order of their collisions per disk; a scene
+// mixing both is refused (their relative order would depend on the run).
 std::vector<ActionSpec> read_actions(const Reader& top) {
   std::vector<ActionSpec> out;
   if (const toml::array* list = top.array("actions")) {
     for (std::size_t i = 0; i < list->size(); ++i) out.push_back(read_action(*list->get(i), i, top));
+    for (std::size_t i = 1; i < out.size(); ++i)
+      if (out[i].collisions_per_disk.has_value() != out[0].collisions_per_disk.has_value())
+        top.fail_node(list->get(i), "actions[" + std::to_string(i) + "]",
+                      "mixes an action by collisions per disk with one by time (actions[0]): their order would depend on the run",
+                      "give every action a time, or every action a collisions_per_disk");
   }
-  std::stable_sort(out.begin(), out.end(),
-                   [](const ActionSpec& a, const ActionSpec& b) { return a.time < b.time; });
+  const auto when = [](const ActionSpec& a) { return a.collisions_per_disk.value_or(a.time); };
+  std::stable_sort(out.begin(), out.end(), [&](const ActionSpec& a, const ActionSpec& b) { return when(a) < when(b); });
   return out;
 }
 
@@ -631,7 +650,7 @@ Scene scene_from_tree(const toml::table& root, const Origin& origin) {
   if (!scene.start) read_all_species(top, scene);
   scene.grow = read_grow(top, scene);
   scene.stop = read_stop(top);
-  scene.sample_interval = read_sampling(top);
+  read_sampling(top, scene);
   scene.actions = read_actions(top);
   check_physics(top, scene);
   return scene;
