@@ -188,6 +188,50 @@ TEST_CASE("Log::event_columns gives the same bits on any number of threads", "[r
   }
 }
 
+TEST_CASE("Log::event_rows writes the columns' bits into packed rows, on any number of threads", "[replay][log][events]") {
+  const ede::Log log = logged("log-rows.ede", {{"log.keyframe_interval=100"}});
+  // A packed, unaligned layout: index, kind, time, i, j, the velocities after, x_i and vjy before.
+  ede::EventRowLayout l;
+  l.index = 0, l.kind = 8, l.time = 9, l.i = 17, l.j = 21, l.vix = 25, l.viy = 33, l.vjx = 41, l.vjy = 49;
+  l.xi = 57, l.vjy_before = 65, l.row_bytes = 73;
+  for (const ede::EventRange& range : {ede::EventRange{}, ede::EventRange{.from_time = 0.1, .to_time = 0.5}}) {
+    const ede::EventColumns c = log.event_columns(range, true, true, 1).value();
+    for (const unsigned threads : {1u, 2u, 3u}) {
+      INFO("threads " << threads);
+      std::vector<unsigned char> rows;
+      std::uint64_t room = 0;
+      const std::uint64_t n = log.event_rows(range, l, [&](std::uint64_t r) {
+                                                  room = r, rows.assign(r * l.row_bytes + 1, 0xAB);
+                                                  return static_cast<void*>(rows.data());
+                                                }, threads).value();
+      REQUIRE(n == c.size());
+      REQUIRE(room >= n);
+      CHECK(rows.back() == 0xAB);  // nothing written past the rows
+      const auto at = [&]<class V>(std::uint64_t k, std::ptrdiff_t offset, V) {
+        V v;
+        std::memcpy(&v, rows.data() + k * l.row_bytes + offset, sizeof v);
+        return v;
+      };
+      bool same = true;
+      for (std::uint64_t k = 0; k < n; ++k)
+        same = same && at(k, l.index, std::uint64_t{}) == c.index[k] && at(k, l.kind, std::uint8_t{}) == c.kind[k] &&
+               at(k, l.i, std::int32_t{}) == c.i[k] && at(k, l.j, std::int32_t{}) == c.j[k] &&
+               at(k, l.time, 0.0) == c.time.exact(k) && at(k, l.vix, 0.0) == c.vix.exact(k) &&
+               at(k, l.vjy, 0.0) == c.vjy.exact(k) && at(k, l.xi, 0.0) == c.xi.exact(k) &&
+               at(k, l.vjy_before, 0.0) == c.vjy_before.exact(k);
+      CHECK(same);
+    }
+  }
+  // A field reaching past the row is refused before anything is written.
+  ede::EventRowLayout bad = l;
+  bad.vjy_before = 70;
+  bool called = false;
+  auto refused = log.event_rows({}, bad, [&](std::uint64_t) { return called = true, static_cast<void*>(nullptr); });
+  REQUIRE_FALSE(refused);
+  CHECK_FALSE(called);
+  CHECK(refused.error().message.find("does not fit a row of 73 bytes") != std::string::npos);
+}
+
 TEST_CASE("Log::open refuses what is not a log, naming the file", "[replay][log][errors]") {
   auto missing = ede::Log::open(temp_path("missing.ede"));
   REQUIRE_FALSE(missing);

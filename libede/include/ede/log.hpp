@@ -49,6 +49,7 @@ struct LogInfo {
   std::vector<std::uint64_t> species_counts;  // disks per species
   double lx = 1, ly = 1;
   BoundaryKind boundary = BoundaryKind::Walls;
+  bool rotates = false;                // rough or spinning disks: states and events carry omega
   bool tc_model = false;
   double gx = 0, gy = 0;
   double initial_energy = 0;
@@ -85,6 +86,19 @@ struct EventColumns {
   Column xi, yi, xj, yj;                            // at the event (only when asked for; else empty)
   Column vix_before, viy_before, vjx_before, vjy_before;  // just before (only when asked for; else empty)
   std::size_t size() const { return index.size(); }
+};
+
+// Where Log::event_rows writes each field of an event in a row of `row_bytes` bytes: a byte offset, or -1
+// for a field not wanted. Reals are written in the log's scalar type (LogInfo::scalar: float, double, or
+// long double for long double and float128 runs), index as uint64, kind as uint8 (EventKind), i and j as
+// int32; no alignment is assumed. The omega fields are 0 unless the log's disks rotate (LogInfo::rotates).
+struct EventRowLayout {
+  std::size_t row_bytes = 0;
+  std::ptrdiff_t index = -1, time = -1, kind = -1, i = -1, j = -1;
+  std::ptrdiff_t vix = -1, viy = -1, vjx = -1, vjy = -1;                              // after the event
+  std::ptrdiff_t xi = -1, yi = -1, xj = -1, yj = -1;                                  // at the event
+  std::ptrdiff_t vix_before = -1, viy_before = -1, vjx_before = -1, vjy_before = -1;  // just before
+  std::ptrdiff_t omega_i = -1, omega_j = -1, omega_i_before = -1, omega_j_before = -1;
 };
 
 struct VerifyOptions {
@@ -136,6 +150,14 @@ class Log {
   // keyframe; the columns are the same bits whatever the number of threads.
   Result<EventColumns> event_columns(const EventRange& range, bool positions = false, bool before = false,
                                      unsigned threads = 0) const;
+  // The same written as rows straight into a buffer the caller owns (a numpy structured array): one pass,
+  // no intermediate columns, so the memory is touched once. `allocate(rows)` is called once, before any
+  // event is replayed, and returns room for `rows` rows (an upper bound: the rows of the range's index
+  // span); the result is the number of rows written (fewer when to_time ends the range inside a chunk).
+  // The same threads and bits as event_columns.
+  Result<std::uint64_t> event_rows(const EventRange& range, const EventRowLayout& layout,
+                                   const std::function<void*(std::uint64_t rows)>& allocate,
+                                   unsigned threads = 0) const;
   // Counts by kind from the chunks' kind columns alone (no replay).
   Result<EventCounts> count_events() const;
 

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <thread>
@@ -35,6 +36,7 @@ LogInfo info_of(const LogReader& r) {
   i.species_counts.assign(h.species_names.size(), 0);
   for (const std::uint32_t s : h.species) ++i.species_counts[s];  // the reader checked every index
   i.lx = h.lx, i.ly = h.ly, i.boundary = h.boundary;
+  i.rotates = h.rotation();
   i.tc_model = h.tc_model, i.gx = h.gx, i.gy = h.gy;
   i.initial_energy = h.initial_energy;
   i.chunk_events = h.chunk_events, i.keyframe_interval = h.keyframe_interval, i.rebuild_interval = h.rebuild_interval;
@@ -169,35 +171,41 @@ Status walk_events(const Log::Impl& impl, const EventRange& range,
   return r.for_each_event(sp.first, sp.end, [&](const ReplayedEvent<T>& e) { return e.time <= sp.t1 && f(e); });
 }
 
-// The columns of an event_columns walk, sized for the whole span up front so that each piece writes its
-// own slice (no appending, no copying pieces together) and the result is moved out as it is.
-template <class T>
-struct ColumnsOf {
-  std::vector<std::uint64_t> index;
-  std::vector<std::uint8_t> kind;
-  std::vector<std::int32_t> i, j;
-  std::vector<T> time, after[4], at[4], pre[4];
-  bool positions = false, before = false;
+// Where one walk writes each field of an event: a base address and the stride between events, or no
+// base for a field not wanted. event_columns points it at its column vectors (stride: one value),
+// event_rows at the fields of the caller's rows (stride: one row), so both share one writer and one walk.
+// memcpy: rows need not be aligned (numpy's structured arrays are packed).
+struct EventFieldSink {
+  struct Field {
+    unsigned char* base = nullptr;
+    std::size_t stride = 0;
+  };
+  Field index, time, kind, i, j, after[4], at[4], pre[4], omega[2], omega_pre[2];
 
-  template <class F>
-  void each(F f) {
-    f(index), f(kind), f(i), f(j), f(time);
-    for (int k = 0; k < 4; ++k) {
-      f(after[k]);
-      if (positions) f(at[k]);
-      if (before) f(pre[k]);
-    }
+  template <class V>
+  static void write(const Field& f, std::size_t r, V v) {
+    if (f.base) std::memcpy(f.base + r * f.stride, &v, sizeof v);
   }
-  void resize(std::size_t n) {
-    each([n](auto& v) { v.resize(n); });
-  }
-  void put(std::size_t r, const ReplayedEvent<T>& e) {
-    index[r] = e.index, kind[r] = static_cast<std::uint8_t>(e.kind), i[r] = e.i, j[r] = e.j, time[r] = e.time;
-    after[0][r] = e.vix, after[1][r] = e.viy, after[2][r] = e.vjx, after[3][r] = e.vjy;
-    if (positions) at[0][r] = e.xi, at[1][r] = e.yi, at[2][r] = e.xj, at[3][r] = e.yj;
-    if (before) pre[0][r] = e.vix0, pre[1][r] = e.viy0, pre[2][r] = e.vjx0, pre[3][r] = e.vjy0;
+  template <class T>
+  void put(std::size_t r, const ReplayedEvent<T>& e) const {
+    write(index, r, e.index), write(time, r, e.time), write(kind, r, static_cast<std::uint8_t>(e.kind));
+    write(i, r, e.i), write(j, r, e.j);
+    write(after[0], r, e.vix), write(after[1], r, e.viy), write(after[2], r, e.vjx), write(after[3], r, e.vjy);
+    write(at[0], r, e.xi), write(at[1], r, e.yi), write(at[2], r, e.xj), write(at[3], r, e.yj);
+    write(pre[0], r, e.vix0), write(pre[1], r, e.viy0), write(pre[2], r, e.vjx0), write(pre[3], r, e.vjy0);
+    write(omega[0], r, e.wi), write(omega[1], r, e.wj), write(omega_pre[0], r, e.wi0), write(omega_pre[1], r, e.wj0);
   }
 };
+
+template <class V>
+EventFieldSink::Field column_field(std::vector<V>& v) {
+  return {reinterpret_cast<unsigned char*>(v.data()), sizeof(V)};
+}
+
+EventFieldSink::Field row_field(void* rows, std::size_t row_bytes, std::ptrdiff_t offset) {
+  if (offset < 0) return {};
+  return {static_cast<unsigned char*>(rows) + offset, row_bytes};
+}
 
 // [first, end) cut at keyframes into at most `pieces` runs of about equal length: each piece after the
 // first starts exactly at a keyframe, so its replay starts there with nothing to skip.
@@ -223,69 +231,142 @@ Status Log::for_each_event(const EventRange& range, const std::function<bool(con
   });
 }
 
+namespace {
+
+// The events of a span written through `sink`, replayed in pieces cut at keyframes on up to `threads`
+// threads. Returns the events written: a prefix of the span (to_time may end it early).
+template <class T>
+Result<std::uint64_t> write_events(const Log::Impl& impl, Replay<T>& cached, const EventSpan<T>& sp,
+                                   const EventFieldSink& sink, unsigned threads) {
+  if (sp.first >= sp.end) return std::uint64_t(0);
+  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  const std::vector<std::uint64_t> bounds = piece_bounds(*impl.reader, sp.first, sp.end, threads);
+  const std::size_t n = bounds.size() - 1;
+  std::vector<std::uint64_t> written(n, 0);
+  std::vector<Status> status(n, Ok{});
+  // Piece 0 continues the cached replay (a from_time seek left it at `first`); the others replay from
+  // their own keyframe on a fresh Replay over the same reader (LogReader is read-only after open).
+  const auto run_piece = [&](std::size_t k) {
+    Replay<T>* r = &cached;
+    std::unique_ptr<Replay<T>> own;
+    if (k > 0) {
+      auto made = Replay<T>::create(impl.reader);
+      if (!made) return void(status[k] = made.error());
+      own = std::move(made).value();
+      r = own.get();
+    }
+    const std::size_t offset = bounds[k] - sp.first;
+    std::uint64_t& count = written[k];
+    status[k] = r->for_each_event(bounds[k], bounds[k + 1], [&](const ReplayedEvent<T>& e) {
+      if (!(e.time <= sp.t1)) return false;
+      sink.put(offset + count++, e);
+      return true;
+    });
+  };
+  std::vector<std::thread> workers;
+  for (std::size_t k = 1; k < n; ++k) workers.emplace_back(run_piece, k);
+  run_piece(0);
+  for (std::thread& w : workers) w.join();
+  // The events kept are a prefix: a piece cut short by t1 is followed by pieces that stopped at their
+  // first event (times never decrease).
+  std::uint64_t kept = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!status[k]) return status[k].error();
+    kept += written[k];
+    if (written[k] < bounds[k + 1] - bounds[k]) break;
+  }
+  return kept;
+}
+
+// Every wanted field inside the row (a binding's layout bug must not write past its buffer).
+Status check_row_layout(const EventRowLayout& l, std::size_t real_bytes) {
+  const std::pair<std::ptrdiff_t, std::size_t> fields[] = {
+      {l.index, 8}, {l.time, real_bytes}, {l.kind, 1}, {l.i, 4}, {l.j, 4},
+      {l.vix, real_bytes}, {l.viy, real_bytes}, {l.vjx, real_bytes}, {l.vjy, real_bytes},
+      {l.xi, real_bytes}, {l.yi, real_bytes}, {l.xj, real_bytes}, {l.yj, real_bytes},
+      {l.vix_before, real_bytes}, {l.viy_before, real_bytes}, {l.vjx_before, real_bytes}, {l.vjy_before, real_bytes},
+      {l.omega_i, real_bytes}, {l.omega_j, real_bytes}, {l.omega_i_before, real_bytes}, {l.omega_j_before, real_bytes}};
+  for (const auto& [offset, bytes] : fields)
+    if (offset >= 0 && std::size_t(offset) + bytes > l.row_bytes)
+      return Error{"event_rows: a field at byte " + std::to_string(offset) + " of " + std::to_string(bytes) +
+                   " bytes does not fit a row of " + std::to_string(l.row_bytes) + " bytes"};
+  return Ok{};
+}
+
+// The cached replay and the span of `range` in T, for the event walks.
+template <class T>
+Result<std::pair<Replay<T>*, EventSpan<T>>> prepare_walk(const Log::Impl& impl, const EventRange& range) {
+  auto replay = impl.replay_in<T>();
+  if (!replay) return replay.error();
+  auto span = span_of(impl, *replay.value(), range);
+  if (!span) return span.error();
+  return std::pair{replay.value(), span.value()};
+}
+
+}  // namespace
+
 Result<EventColumns> Log::event_columns(const EventRange& range, bool positions, bool before,
                                         unsigned threads) const {
   return with_scalar(impl_->info.scalar, [&]<class T>() -> Result<EventColumns> {
-    auto replay = impl_->replay_in<T>();
-    if (!replay) return replay.error();
-    auto span = span_of(*impl_, *replay.value(), range);
-    if (!span) return span.error();
-    const EventSpan<T> sp = span.value();
-    ColumnsOf<T> c;
-    c.positions = positions, c.before = before;
-    if (sp.first < sp.end) {
-      if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-      const std::vector<std::uint64_t> bounds = piece_bounds(*impl_->reader, sp.first, sp.end, threads);
-      const std::size_t n = bounds.size() - 1;
-      c.resize(sp.end - sp.first);
-      std::vector<std::uint64_t> written(n, 0);
-      std::vector<Status> status(n, Ok{});
-      // Piece 0 continues the cached replay (a from_time seek left it at `first`); the others replay from
-      // their own keyframe on a fresh Replay over the same reader (LogReader is read-only after open).
-      const auto run_piece = [&](std::size_t k) {
-        Replay<T>* r = replay.value();
-        std::unique_ptr<Replay<T>> own;
-        if (k > 0) {
-          auto made = Replay<T>::create(impl_->reader);
-          if (!made) return void(status[k] = made.error());
-          own = std::move(made).value();
-          r = own.get();
-        }
-        const std::size_t offset = bounds[k] - sp.first;
-        status[k] = r->for_each_event(bounds[k], bounds[k + 1], [&](const ReplayedEvent<T>& e) {
-          if (!(e.time <= sp.t1)) return false;
-          c.put(offset + written[k]++, e);
-          return true;
-        });
-      };
-      std::vector<std::thread> workers;
-      for (std::size_t k = 1; k < n; ++k) workers.emplace_back(run_piece, k);
-      run_piece(0);
-      for (std::thread& w : workers) w.join();
-      // The events kept are a prefix: a piece cut short by t1 is followed by pieces that stopped at their
-      // first event (times never decrease).
-      std::uint64_t kept = 0;
-      for (std::size_t k = 0; k < n; ++k) {
-        if (!status[k]) return status[k].error();
-        kept += written[k];
-        if (written[k] < bounds[k + 1] - bounds[k]) break;
-      }
-      c.resize(kept);
+    auto walk = prepare_walk<T>(*impl_, range);
+    if (!walk) return walk.error();
+    const auto [replay, sp] = walk.value();
+    const std::size_t n = sp.first < sp.end ? sp.end - sp.first : 0;
+    std::vector<std::uint64_t> index(n);
+    std::vector<std::uint8_t> kind(n);
+    std::vector<std::int32_t> i(n), j(n);
+    std::vector<T> time(n), after[4], at[4], pre[4];
+    EventFieldSink sink;
+    sink.index = column_field(index), sink.kind = column_field(kind), sink.i = column_field(i);
+    sink.j = column_field(j), sink.time = column_field(time);
+    for (int k = 0; k < 4; ++k) {
+      after[k].resize(n), sink.after[k] = column_field(after[k]);
+      if (positions) at[k].resize(n), sink.at[k] = column_field(at[k]);
+      if (before) pre[k].resize(n), sink.pre[k] = column_field(pre[k]);
     }
+    auto kept = write_events(*impl_, *replay, sp, sink, threads);
+    if (!kept) return kept.error();
+    const std::size_t m = kept.value();
+    const auto cut = [m](auto& v) -> auto&& { return v.resize(std::min(v.size(), m)), std::move(v); };
     EventColumns out;
-    out.index = std::move(c.index), out.kind = std::move(c.kind), out.i = std::move(c.i), out.j = std::move(c.j);
-    out.time = Column(std::move(c.time));
-    out.vix = Column(std::move(c.after[0])), out.viy = Column(std::move(c.after[1]));
-    out.vjx = Column(std::move(c.after[2])), out.vjy = Column(std::move(c.after[3]));
+    out.index = cut(index), out.kind = cut(kind), out.i = cut(i), out.j = cut(j), out.time = Column(cut(time));
+    out.vix = Column(cut(after[0])), out.viy = Column(cut(after[1]));
+    out.vjx = Column(cut(after[2])), out.vjy = Column(cut(after[3]));
     if (positions) {
-      out.xi = Column(std::move(c.at[0])), out.yi = Column(std::move(c.at[1]));
-      out.xj = Column(std::move(c.at[2])), out.yj = Column(std::move(c.at[3]));
+      out.xi = Column(cut(at[0])), out.yi = Column(cut(at[1]));
+      out.xj = Column(cut(at[2])), out.yj = Column(cut(at[3]));
     }
     if (before) {
-      out.vix_before = Column(std::move(c.pre[0])), out.viy_before = Column(std::move(c.pre[1]));
-      out.vjx_before = Column(std::move(c.pre[2])), out.vjy_before = Column(std::move(c.pre[3]));
+      out.vix_before = Column(cut(pre[0])), out.viy_before = Column(cut(pre[1]));
+      out.vjx_before = Column(cut(pre[2])), out.vjy_before = Column(cut(pre[3]));
     }
     return out;
+  });
+}
+
+Result<std::uint64_t> Log::event_rows(const EventRange& range, const EventRowLayout& layout,
+                                      const std::function<void*(std::uint64_t rows)>& allocate,
+                                      unsigned threads) const {
+  return with_scalar(impl_->info.scalar, [&]<class T>() -> Result<std::uint64_t> {
+    if (Status s = check_row_layout(layout, sizeof(T)); !s) return s.error();
+    auto walk = prepare_walk<T>(*impl_, range);
+    if (!walk) return walk.error();
+    const auto [replay, sp] = walk.value();
+    const std::uint64_t room = sp.first < sp.end ? sp.end - sp.first : 0;
+    void* rows = allocate(room);
+    if (!rows && room > 0) return Error{impl_->info.path + ": no room for the events' rows"};
+    const std::size_t w = layout.row_bytes;
+    const auto f = [&](std::ptrdiff_t offset) { return row_field(rows, w, offset); };
+    EventFieldSink sink;
+    sink.index = f(layout.index), sink.time = f(layout.time), sink.kind = f(layout.kind);
+    sink.i = f(layout.i), sink.j = f(layout.j);
+    const std::ptrdiff_t after[] = {layout.vix, layout.viy, layout.vjx, layout.vjy};
+    const std::ptrdiff_t at[] = {layout.xi, layout.yi, layout.xj, layout.yj};
+    const std::ptrdiff_t pre[] = {layout.vix_before, layout.viy_before, layout.vjx_before, layout.vjy_before};
+    for (int k = 0; k < 4; ++k) sink.after[k] = f(after[k]), sink.at[k] = f(at[k]), sink.pre[k] = f(pre[k]);
+    sink.omega[0] = f(layout.omega_i), sink.omega[1] = f(layout.omega_j);
+    sink.omega_pre[0] = f(layout.omega_i_before), sink.omega_pre[1] = f(layout.omega_j_before);
+    return write_events(*impl_, *replay, sp, sink, threads);
   });
 }
 
