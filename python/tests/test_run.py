@@ -74,6 +74,11 @@ def test_progress_callback_sees_the_run_and_its_exceptions_stop_it(tmp_path):
     sim.run(max_events=600_000, progress=seen.append)
     assert seen and all(0 <= p["fraction"] <= 1 for p in seen)
     assert seen[-1]["events"] > seen[0]["events"]
+    assert seen[-1]["time"] == sim.time and seen[-1]["fraction"] < 1  # paused at max_events: a last report
+
+    done = []
+    ede.Simulation(SMALL_GAS).run(progress=done.append)
+    assert done[-1]["fraction"] == 1.0  # the stop reached: the display ends at 100 %
 
     def stop(p):
         raise RuntimeError("enough")

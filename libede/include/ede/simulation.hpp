@@ -73,7 +73,8 @@ struct SimulationOptions {
   // Record every event here ("" = no log); an existing file is replaced, unless another run is writing it
   // or an ede tool is reading it (both hold a lock on it): then create() fails, naming the file.
   std::string log_path;
-  // Called every 2^18 events or so (a few times a second) from run() and advance_to().
+  // Called every 2^18 events or so (a few times a second) from run() and advance_to(), and once as they
+  // return (fraction 1 when a stop condition was reached).
   std::function<void(const Progress&)> progress;
   // Keep running sums of the impulses the disks give the walls and each other (Simulation::impulses), for
   // a live pressure monitor. Off by default: it costs one more call per event.

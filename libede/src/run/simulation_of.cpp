@@ -70,6 +70,9 @@ class SimulationOf final : public Simulation::Impl {
       if (options.progress && ++slices % kSlicesPerProgress == 0) report_progress(start);
     }
     if (interrupt_requested.exchange(false)) was_interrupted = true;
+    // A last report as the call returns, so a progress display ends where the run did (100 % when a stop
+    // condition was reached, not the last periodic report's 90 %).
+    if (options.progress) report_progress(start, reached_stop(s));
     wall_seconds += seconds_since(start);
     status = s;
     return s;
@@ -164,13 +167,19 @@ class SimulationOf final : public Simulation::Impl {
   }
 
  private:
-  void report_progress(std::chrono::steady_clock::time_point start) const {
+  static bool reached_stop(RunStatus s) {
+    return s == RunStatus::ReachedTime || s == RunStatus::ReachedEvents || s == RunStatus::ReachedCollisions ||
+           s == RunStatus::ReachedEnergy;
+  }
+
+  void report_progress(std::chrono::steady_clock::time_point start, bool done = false) const {
     const EventCounts& c = engine_->counts();
     double energy_ratio = 1;
     if (setup_.scene.stop.energy_fraction && engine_->initial_kinetic_energy() > 0)
       energy_ratio = kinetic_energy(engine_->particles()) / engine_->initial_kinetic_energy();
     const ProgressInputs now{double(engine_->time()), c.events(), c.of(EventKind::Pair), energy_ratio};
-    options.progress(Progress{progress_fraction(setup_.scene.stop, engine_->particles().size(), now), c.events(),
+    const double fraction = done ? 1.0 : progress_fraction(setup_.scene.stop, engine_->particles().size(), now);
+    options.progress(Progress{fraction, c.events(),
                               double(engine_->time()), wall_seconds + seconds_since(start)});
   }
 
