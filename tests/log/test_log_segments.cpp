@@ -8,18 +8,13 @@
 #include "ede/log.hpp"
 #include "ede/simulation.hpp"
 #include "log_test_support.hpp"
-#include "reference_reader.hpp"
+#include "reference_compare.hpp"
 #include "scene_test_support.hpp"
 
 using namespace ede;
 using namespace ede::test;
 
 namespace {
-
-template <class T>
-bool same(T a, T b) {
-  return std::memcmp(&a, &b, reference::kWidth<T>) == 0;
-}
 
 // A funnel and an obstacle in a walled box, 60 disks: segment bodies and end points both get hit.
 EngineOptions funnel_options(double xi) {
@@ -51,28 +46,15 @@ void check_segment_log(double xi, const std::string& file) {
     for (std::size_t i = 0; i < p.size(); ++i) {
       const Disk<T>& want = run.recorder->sample_states[k][i];
       INFO("sample " << k << ", disk " << i);
-      REQUIRE(same(p.x_at(i, t), want.x));
-      REQUIRE(same(p.y_at(i, t), want.y));
-      REQUIRE(same(p.disk[i].vx, want.vx));
-      REQUIRE(same(p.disk[i].vy, want.vy));
+      REQUIRE(same_bits(p.x_at(i, t), want.x));
+      REQUIRE(same_bits(p.y_at(i, t), want.y));
+      REQUIRE(same_bits(p.disk[i].vx, want.vx));
+      REQUIRE(same_bits(p.disk[i].vy, want.vy));
     }
   }
   // The reference reader, written from FORMAT.md, agrees after every chunk.
   auto log = open_log(run.path);
-  auto fast = replay_of<T>(run.path);
-  reference::Reader<T> ref(*log);
-  std::uint64_t checked = 0;
-  ref.run([&](std::uint64_t events, const std::vector<reference::Record<T>>& records) {
-    REQUIRE(fast->seek_event(events));
-    for (std::size_t i = 0; i < records.size(); ++i) {
-      const Disk<T>& d = fast->particles().disk[i];
-      INFO("event " << events << ", disk " << i);
-      REQUIRE((same(d.x, records[i].x) && same(d.y, records[i].y) && same(d.vx, records[i].vx) &&
-               same(d.vy, records[i].vy) && same(d.t, records[i].t)));
-    }
-    checked = events;
-  });
-  CHECK(checked == log->total_events());
+  CHECK(compare_with_reference<T>(run.path) == log->total_events());
 }
 
 }  // namespace

@@ -7,7 +7,7 @@
 
 #include "ede/scene.hpp"
 #include "log_test_support.hpp"
-#include "reference_reader.hpp"
+#include "reference_compare.hpp"
 #include "setup/setup.hpp"
 
 using namespace ede;
@@ -15,36 +15,11 @@ using namespace ede::test;
 
 namespace {
 
-template <class T>
-bool same(T a, T b) {
-  return std::memcmp(&a, &b, reference::kWidth<T>) == 0;
-}
-
-template <class T>
-std::uint64_t compare_readers(const std::string& path) {
-  auto log = open_log(path);
-  auto fast = replay_of<T>(path);
-  reference::Reader<T> ref(*log);
-  std::uint64_t checked = 0;
-  ref.run([&](std::uint64_t events, const std::vector<reference::Record<T>>& records) {
-    REQUIRE(fast->seek_event(events));
-    const Particles<T>& p = fast->particles();
-    for (std::size_t i = 0; i < records.size(); ++i) {
-      const Disk<T>& d = p.disk[i];
-      const reference::Record<T>& r = records[i];
-      INFO("event " << events << ", disk " << i);
-      REQUIRE((same(d.x, r.x) && same(d.y, r.y) && same(d.vx, r.vx) && same(d.vy, r.vy) && same(d.t, r.t)));
-    }
-    checked = events;
-  });
-  return checked;
-}
-
 std::uint64_t compare_any(const std::string& path) {
   switch (open_log(path)->header().scalar) {
-    case ScalarKind::Float: return compare_readers<float>(path);
-    case ScalarKind::LongDouble: return compare_readers<long double>(path);
-    default: return compare_readers<double>(path);
+    case ScalarKind::Float: return compare_with_reference<float>(path);
+    case ScalarKind::LongDouble: return compare_with_reference<long double>(path);
+    default: return compare_with_reference<double>(path);
   }
 }
 

@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "ede/ede.hpp"
+#include "scene_test_support.hpp"
 #include "tool_runner.hpp"  // temp_path, read_file
 
 using ede::test::read_file;
@@ -14,28 +15,9 @@ using ede::test::temp_path;
 
 namespace {
 
-// 400 disks in a walled box; small keyframe and rebuild intervals so that short runs hold several.
-const char* kGas = R"(seed = 5
-[box]
-size = [1.0, 1.0]
-[engine]
-rebuild_interval = 4000
-[log]
-keyframe_interval = 3000
-chunk_events = 1024
-[[species]]
-name = "gas"
-count = 400
-radius = 0.01
-[species.velocity]
-kind = "speed"
-speed = 1.0
-[stop]
-time = 2.0
-)";
-
+// The shared test gas (scene_test_support.hpp), with a few overrides.
 ede::Scene gas(const std::vector<ede::Override>& overrides = {}) {
-  return ede::parse_scene_text(kGas, "gas-test", overrides).value();
+  return ede::parse_scene_text(ede::test::logged_gas("5", "2.0").text(), "gas-test", overrides).value();
 }
 
 std::string bytes_of(const std::string& path) { return read_file(path); }

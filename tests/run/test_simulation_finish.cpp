@@ -5,34 +5,16 @@
 #include <cmath>
 
 #include "ede/ede.hpp"
+#include "scene_test_support.hpp"
 #include "tool_runner.hpp"  // temp_path
 
 using ede::test::temp_path;
 
 namespace {
 
-// 400 disks in a walled box, small chunks and keyframes so that a stop falls between them.
-const char* kGas = R"(seed = 11
-[box]
-size = [1.0, 1.0]
-[engine]
-rebuild_interval = 4000
-[log]
-keyframe_interval = 3000
-chunk_events = 1024
-[[species]]
-name = "gas"
-count = 400
-radius = 0.01
-[species.velocity]
-kind = "speed"
-speed = 1.0
-[stop]
-time = 50.0
-)";
-
+// The shared test gas (scene_test_support.hpp), with a few overrides.
 ede::Scene gas(const std::vector<ede::Override>& overrides = {}) {
-  return ede::parse_scene_text(kGas, "finish-test", overrides).value();
+  return ede::parse_scene_text(ede::test::logged_gas("11", "50.0").text(), "finish-test", overrides).value();
 }
 
 void check_same_state(const ede::State& a, const ede::State& b) {

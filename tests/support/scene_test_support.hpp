@@ -54,14 +54,24 @@ struct GasToml {
   std::string placement = {};  // the lines of [species.placement]; none: no table (random in the box)
   std::string velocity = "kind = \"speed\"\nspeed = 1.0";
   std::string stop = "time = 1.0";
+  std::string tables = {};  // more top-level tables before [[species]] ([engine], [log], ...)
 
   std::string text() const {
-    std::string t = (seed.empty() ? "" : "seed = " + seed + "\n") + "[box]\nsize = " + size +
-                    "\n[[species]]\nname = \"gas\"\ncount = " + count + "\nradius = " + radius + "\n";
+    std::string t = (seed.empty() ? "" : "seed = " + seed + "\n") + "[box]\nsize = " + size + "\n" + tables +
+                    "[[species]]\nname = \"gas\"\ncount = " + count + "\nradius = " + radius + "\n";
     if (!placement.empty()) t += "[species.placement]\n" + placement + "\n";
     return t + "[species.velocity]\n" + velocity + "\n[stop]\n" + stop + "\n";
   }
 };
+
+// 400 disks in a walled box with small rebuild, keyframe and chunk intervals, so that short runs hold
+// several of each and a stop falls between them: the run and Simulation tests' gas.
+inline GasToml logged_gas(const std::string& seed, const std::string& stop_time) {
+  GasToml g;
+  g.seed = seed, g.stop = "time = " + stop_time;
+  g.tables = "[engine]\nrebuild_interval = 4000\n[log]\nkeyframe_interval = 3000\nchunk_events = 1024\n";
+  return g;
+}
 
 // The divider at x = 1 of a [2, 1] box with a hole from y = lower_top to upper_bottom, as two
 // [[walls.segments]] (the effusion scenes); `upper_extra`: more lines for the upper one (a restitution).

@@ -3,6 +3,8 @@
 Conventions (issue 4): axes labelled with units (ede's units are the scene's: lengths L, times T, masses M);
 theory curves dashed; initial distributions shown beside the final ones in a lighter colour.
 """
+import csv
+
 import matplotlib
 
 matplotlib.use("Agg")  # files only, no display
@@ -22,6 +24,13 @@ UNITS = {
     "pressure": "pressure [M/T²]  (force per length, 2D)",
     "length": "[L]",
 }
+
+
+def read_columns(path):
+    """A CSV table as {column: [floats]} (an empty cell is NaN; no rows: {})."""
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    return {key: [float(r[key]) if r[key] != "" else float("nan") for r in rows] for key in rows[0]} if rows else {}
 
 
 def figure(width=6.4, height=4.2):

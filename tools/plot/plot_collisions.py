@@ -5,20 +5,14 @@ Three panels sharing the time axis: pair collisions per disk; the collision rate
 inverse, the mean free time, on the right axis) with Enskog's rate for each interval (dotted, when the
 CSV has it: equal disks); the speed classes slow / medium / fast in percent.
 """
-import csv
 import sys
 
 import ede_style as style
 
 
-def read(path):
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
-    return {key: [float(r[key]) if r[key] != "" else float("nan") for r in rows] for key in rows[0]}
-
 
 def main(path, out):
-    c = read(path)
+    c = style.read_columns(path)
     t = c["time"]
     fig, _ = style.figure(height=8)
     fig.clear()

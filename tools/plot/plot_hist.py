@@ -4,21 +4,15 @@ Usage: plot_hist.py HIST.csv CURVE.csv OUT.png|svg speed|energy TITLE
 Left panel: the initial (t = 0) histogram, lighter. Right panel: the histogram at the chosen time(s)
 with the Maxwell-Boltzmann density at the measured kT dashed. Both panels share the bins and the axes.
 """
-import csv
 import sys
 
 import ede_style as style
 
 
-def read(path):
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
-    return {key: [float(r[key]) for r in rows] for key in rows[0]} if rows else {}
-
 
 def main(hist_path, curve_path, out, quantity, title):
-    h = read(hist_path)
-    curve = read(curve_path)
+    h = style.read_columns(hist_path)
+    curve = style.read_columns(curve_path)
     left, right = h["bin_left"], h["bin_right"]
     widths = [b - a for a, b in zip(left, right)]
     fig, _ = style.figure(width=10, height=4.2)
