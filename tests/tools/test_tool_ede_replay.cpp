@@ -5,6 +5,7 @@
 // keyframe intervals so that every log has several of each and seeks cross keyframes.
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <map>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -270,6 +271,41 @@ TEST_CASE("ede-replay events --full: positions, velocities before, impulse, impa
   }
   CHECK(pairs > 50);
   CHECK(walls > 5);
+}
+
+TEST_CASE("ede-replay events: a rough log adds the spins after (and with --full before) each event",
+          "[tool][ede-replay][rough]") {
+  const std::string log = make_log("events-rough.ede", "examples/rough/equipartition.toml",
+                                   " --set species.gas.count=200 --set stop.time=0.2" + kSmallRecords);
+  const ToolRun narrow = replay("events " + log, "events-rough");
+  REQUIRE(narrow.status == 0);
+  CHECK(lines(narrow.out)[0] == "index,time,kind,i,j,vix,viy,vjx,vjy,omega_i,omega_j");
+  const ToolRun r = replay("events " + log + " --full", "events-rough-full");
+  REQUIRE(r.status == 0);
+  const auto rows = lines(r.out);
+  REQUIRE(rows[0].size() > 60);
+  CHECK_THAT(rows[0], Catch::Matchers::EndsWith("tangential_speed,omega_i,omega_j,omega_i_before,omega_j_before"));
+  // Each disk's spin before an event is its spin after the previous event that touched it (spins change
+  // only in collisions), and rough collisions do change spins.
+  std::map<std::string, std::string> spin;
+  int checked = 0, changed = 0;
+  for (std::size_t k = 1; k < rows.size(); ++k) {
+    auto f = csv_fields(rows[k]);
+    f.resize(28);
+    const bool pair = f[2] == "pair";
+    if (f[3].empty()) continue;
+    for (int side = 0; side < (pair ? 2 : 1); ++side) {
+      const std::string &disk = f[3 + side], &after = f[24 + side], &before = f[26 + side];
+      if (spin.count(disk)) {
+        ++checked;
+        CHECK(spin[disk] == before);
+      }
+      changed += after != before ? 1 : 0;
+      spin[disk] = after;
+    }
+  }
+  CHECK(checked > 100);
+  CHECK(changed > 100);
 }
 
 TEST_CASE("ede-replay verify re-runs a log's scene and finds it identical", "[tool][ede-replay]") {

@@ -9,7 +9,9 @@
 // statistics (ede/collision_stats.hpp, in double, 17 digits): impulse_x,impulse_y,impulse (on disk i,
 // m_i (v_i' - v_i); pair, wall, segment), impact_parameter (b / (r_i + r_j), signed; pair), relative_speed
 // (|v_i - v_j| before; wall, segment: |v_i|), normal_speed (approach speed; wall, segment: |v_i . n|),
-// tangential_speed (signed; pair). Rejected: a separate --collisions flag, one more flag for what --full
+// tangential_speed (signed; pair). A log of rotating (rough) disks adds, last, the angular velocities after
+// the event, omega_i,omega_j, and with --full those before it, omega_i_before,omega_j_before (pair: both
+// disks; wall, segment, wrap: disk i). Rejected: a separate --collisions flag, one more flag for what --full
 // already means (everything known about an event).
 // A time range [T0, T1] seeks to the state just before T0 from the nearest keyframe, then reads events
 // until one is later than T1: the cost is the range, not the log.
@@ -45,7 +47,7 @@ std::string statistics(const CollisionRecord& c) {
          d(c.relative_speed) + "," + d(c.normal_speed) + "," + (c.pair ? d(c.tangential_speed) : "");
 }
 
-std::string row(const Log& log, const Event& e, const CollisionDisks* disks) {
+std::string row(const Log& log, const Event& e, const CollisionDisks* disks, bool spins) {
   const bool full = disks != nullptr;
   const auto x = [&](Time v) { return exact(log, v); };
   const auto two = [](const std::string& a, const std::string& b) { return a + "," + b; };
@@ -57,6 +59,10 @@ std::string row(const Log& log, const Event& e, const CollisionDisks* disks) {
     s += "," + (has_disk(e.kind) ? two(x(e.xi), x(e.yi)) : ",") + "," + (pair ? two(x(e.xj), x(e.yj)) : ",") + "," +
          (has_disk(e.kind) ? two(x(e.vix_before), x(e.viy_before)) : ",") + "," +
          (pair ? two(x(e.vjx_before), x(e.vjy_before)) : ",") + "," + statistics(collision_record(e, *disks));
+  if (spins) {
+    s += "," + (has_disk(e.kind) ? x(e.omega_i) : "") + "," + (pair ? x(e.omega_j) : "");
+    if (full) s += "," + (has_disk(e.kind) ? x(e.omega_i_before) : "") + "," + (pair ? x(e.omega_j_before) : "");
+  }
   return s + "\n";
 }
 
@@ -95,12 +101,15 @@ int run_events(const EventsOptions& opt) {
     if (!d) return fail(d.error().message);
     disks = std::move(d).value();
   }
-  std::fputs(opt.full ? "index,time,kind,i,j,vix,viy,vjx,vjy,xi,yi,xj,yj,vix_before,viy_before,vjx_before,vjy_before,"
-                        "impulse_x,impulse_y,impulse,impact_parameter,relative_speed,normal_speed,tangential_speed\n"
-                      : "index,time,kind,i,j,vix,viy,vjx,vjy\n",
-             out);
+  const bool spins = log.value().info().rotates;
+  std::string header = opt.full ? "index,time,kind,i,j,vix,viy,vjx,vjy,xi,yi,xj,yj,vix_before,viy_before,vjx_before,"
+                                  "vjy_before,impulse_x,impulse_y,impulse,impact_parameter,relative_speed,normal_speed,"
+                                  "tangential_speed"
+                                : "index,time,kind,i,j,vix,viy,vjx,vjy";
+  if (spins) header += opt.full ? ",omega_i,omega_j,omega_i_before,omega_j_before" : ",omega_i,omega_j";
+  std::fputs((header + "\n").c_str(), out);
   const Status s = log.value().for_each_event(range.value(), [&](const Event& e) {
-    std::fputs(row(log.value(), e, disks ? &*disks : nullptr).c_str(), out);
+    std::fputs(row(log.value(), e, disks ? &*disks : nullptr, spins).c_str(), out);
     return std::ferror(out) == 0;  // a full disk ends the walk; close() names the file
   });
   if (!s) return fail(s.error().message);
