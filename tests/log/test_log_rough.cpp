@@ -14,6 +14,7 @@
 #include "log/log_messages.hpp"
 #include "log_test_support.hpp"
 #include "reference_compare.hpp"
+#include "scene_test_support.hpp"
 #include "setup/setup_from_csv.hpp"
 
 using namespace ede;
@@ -173,4 +174,30 @@ interval = 0.5
   REQUIRE(report.ok());
   INFO(report.value().text);
   CHECK(report.value().identical);
+}
+
+TEST_CASE("rough log: convert rewrites it as version 2 with the same content, and refuses version 1", "[log][rough]") {
+  GasToml g = logged_gas("7", "0.5");
+  g.tables += "[physics]\nrestitution = 0.9\nroughness = 0.4\n";
+  g.velocity = "kind = \"maxwell\"\ntemperature = 1.0";
+  const std::string path = run_to_log(scene_of(g.text() + "[[actions]]\ntime = 0.25\nkind = \"reverse_velocities\"\n",
+                                               "rough-convert.toml"),
+                                      "rough-convert.ede");
+  auto log = Log::open(path);
+  REQUIRE(log.ok());
+  REQUIRE(log.value().info().rotates);
+  const std::string copy = temp_path("rough-convert-v2.ede");
+  REQUIRE(log.value().convert(copy, 2).ok());
+  auto converted = Log::open(copy);
+  REQUIRE(converted.ok());
+  CHECK(converted.value().content_digest().value() == log.value().content_digest().value());
+  CHECK(compare_with_reference<double>(copy) == log.value().info().events);
+  const State a = log.value().state_at(0.3).value(), b = converted.value().state_at(0.3).value();
+  bool same = a.size() == b.size();
+  for (std::size_t i = 0; same && i < a.size(); ++i)
+    same = a.omega.exact(i) == b.omega.exact(i) && a.vx.exact(i) == b.vx.exact(i) && a.x.exact(i) == b.x.exact(i);
+  CHECK(same);
+  const Status v1 = log.value().convert(temp_path("rough-convert-v1.ede"), 1);
+  REQUIRE_FALSE(v1.ok());
+  CHECK(v1.error().message.find("no angular velocities; convert it to version 2") != std::string::npos);
 }

@@ -36,6 +36,7 @@ Status convert_as(const std::shared_ptr<const LogReader>& log, const std::string
   run.rebuild_interval = h.rebuild_interval;
   run.tc_model = h.tc_model;
   run.gx = h.gx, run.gy = h.gy;
+  run.rotation = h.rotation();  // the replayed state carries each disk's inertia and spin
   run.engine_version = h.engine_version, run.compiler = h.compiler, run.compile_flags = h.compile_flags;
   if (version >= 2) {
     auto scene = parse_scene_text(h.scene_text, h.scene_name);
@@ -83,7 +84,7 @@ Status convert_as(const std::shared_ptr<const LogReader>& log, const std::string
     if (!e) return e.error();
     const ReplayedEvent<T>& r = e.value();
     EventOutcome<T> out{r.time, r.kind, false, r.i, r.j, r.vix, r.viy, r.vjx, r.vjy,
-                        r.vix0, r.viy0, r.vjx0, r.vjy0};
+                        r.vix0, r.viy0, r.vjx0, r.vjy0, r.wi, r.wj};
     writer.on_event(out, replay.particles());
     if (Status s = rebuilds_at(n + 1); !s) return s;
   }
@@ -99,11 +100,11 @@ Status convert_log(const std::shared_ptr<const LogReader>& log, const std::strin
     return Error{log->path() + ": the log is incomplete (" + log->incomplete_reason() +
                  "); finish or resume the run before converting it"};
   if (log->damaged()) return Error{log->path() + ": the log is damaged; it cannot be converted"};
-  if (log->header().rotation())
-    return Error{log->path() + ": a log of rough (rotating) disks cannot be converted yet: format version 1 has no "
-                 "angular velocities, and rewriting one as version 2 is not implemented"};
   if (version < 1 || version > 2)
     return Error{"format version " + std::to_string(version) + " is not one this ede writes (1 or 2)"};
+  if (log->header().rotation() && version < 2)
+    return Error{log->path() + ": a log of rough (rotating) disks cannot be written in format version 1, which has "
+                 "no angular velocities; convert it to version 2 (--format-version 2)"};
   switch (log->header().scalar) {
     case ScalarKind::Float: return convert_as<float>(log, out_path, version);
     case ScalarKind::LongDouble: return convert_as<long double>(log, out_path, version);
