@@ -1,4 +1,5 @@
 """Log: an event log (.ede) opened for reading -- states at any time, events, checks."""
+import numbers
 import os
 import tomllib
 
@@ -49,11 +50,15 @@ class Log:
     def end_time(self):
         return self.info["end_time"]
 
-    def state(self, t=None, *, event=None):
+    def state(self, t=None, *, event=None, collisions_per_disk=None):
         """The state after every event with time <= t (a number, or a string as ede-replay --at reads it),
-        or after the first `event` events; with neither, the state at the end of the log."""
-        if t is not None and event is not None:
-            raise TypeError("state: give a time t or event=n, not both")
+        or after the first `event` events, or right after the pair collision that brings the count to
+        ceil(c N / 2) for collisions_per_disk=c (as [[actions]] collisions_per_disk counts); with none of
+        them, the state at the end of the log."""
+        if (t is not None) + (event is not None) + (collisions_per_disk is not None) > 1:
+            raise TypeError("state: give one of a time t, event=n and collisions_per_disk=c, not both")
+        if collisions_per_disk is not None:
+            return State(self._log.state_at_event(self.events_after_collisions([collisions_per_disk])[0]))
         if event is not None:
             if isinstance(event, bool) or not hasattr(event, "__index__"):
                 raise TypeError("state(event=n): expected an int, got %s" % type(event).__name__)
@@ -61,6 +66,16 @@ class Log:
         if t is None:
             return State(self._log.state_at_end())
         return State(self._log.state_at(t))
+
+    def events_after_collisions(self, collisions_per_disk):
+        """For each c (ascending) the number of events after which the state is the one right after the
+        pair collision that brings the count to ceil(c N / 2): state(event=n) of it is that snapshot.
+        Read from the log's kind columns, without replaying."""
+        values = list(collisions_per_disk)
+        for c in values:
+            if isinstance(c, bool) or not isinstance(c, numbers.Real):
+                raise TypeError("collisions per disk: expected numbers, got %s" % type(c).__name__)
+        return self._log.events_after_collisions([float(c) for c in values])
 
     def states(self, times):
         """The states at each of `times`, one after the other. Increasing times continue the replay from

@@ -73,6 +73,10 @@ void bind_log(py::module_& m) {
              return state_dict(released([&] { return log.state_at_end(); }));
            })
       .def("count_events", [](const Log& log) { return counts_dict(value_or_raise(log.count_events())); })
+      .def("events_after_collisions",
+           [](const Log& log, const std::vector<double>& c) {
+             return released([&] { return log.events_after_collisions(c); });
+           })
       .def("verify",
            [](const Log& log) {
              const VerifyReport& v = released([&] { return log.verify(); });

@@ -166,3 +166,16 @@ def test_damaged_logs_raise_and_never_crash(gas_log, tmp_path):
             log.events()
         except ede.Error as e:
             assert "bad%d.ede" % trial in str(e)
+
+
+def test_state_by_collisions_per_disk_is_the_state_after_that_collision(gas_log):
+    log = ede.open(gas_log)
+    n = log.events_after_collisions([0, 1, 2])
+    assert n[0] == 0 and 0 < n[1] < n[2]
+    ev = log.events(last=n[2])
+    assert (ev["kind"] == 0).sum() == int(np.ceil(2 * log.info["disks"] / 2)) and ev["kind"][-1] == 0
+    a, b = log.state(collisions_per_disk=1), log.state(event=n[1])
+    np.testing.assert_array_equal(a.x, b.x)
+    np.testing.assert_array_equal(a.vx, b.vx)
+    with pytest.raises(TypeError):
+        log.state(0.5, collisions_per_disk=1)

@@ -232,6 +232,35 @@ TEST_CASE("Log::event_rows writes the columns' bits into packed rows, on any num
   CHECK(refused.error().message.find("does not fit a row of 73 bytes") != std::string::npos);
 }
 
+TEST_CASE("Log::events_after_collisions finds where a collisions-per-disk schedule acts", "[replay][log][schedule]") {
+  // 200 disks: an action scheduled at 2.5 collisions per disk acts right after pair collision 250, and is
+  // logged as the event at the index events_after_collisions gives.
+  const std::string text = std::string(kScene) + "[[actions]]\ncollisions_per_disk = 2.5\nkind = \"reverse_velocities\"\n";
+  const ede::Log log = ede::Log::open(ede::test::run_to_log(ede::test::scene_of(text, "schedule-test"),
+                                                            "log-schedule.ede")).value();
+  const auto events = log.events({}).value();
+  std::uint64_t action = 0;
+  for (const ede::Event& e : events)
+    if (e.kind == ede::EventKind::Action) action = e.index;
+  REQUIRE(action > 0);
+  const auto n = log.events_after_collisions({0, 0.005, 2.5}).value();
+  CHECK(n[0] == 0);
+  CHECK(n[2] == action);
+  // 0.005 collisions per disk: ceil(0.5) = the first pair collision.
+  std::uint64_t first_pair = 0;
+  while (events[first_pair].kind != ede::EventKind::Pair) ++first_pair;
+  CHECK(n[1] == first_pair + 1);
+  std::uint64_t pairs = 0;
+  for (std::uint64_t k = 0; k < n[2]; ++k) pairs += events[k].kind == ede::EventKind::Pair ? 1 : 0;
+  CHECK(pairs == 250);
+  CHECK(events[n[2] - 1].kind == ede::EventKind::Pair);
+  // Past the log's last pair collision, and out of order: refused.
+  const auto past = log.events_after_collisions({1e6});
+  REQUIRE_FALSE(past);
+  CHECK(past.error().message.find("pair collisions, fewer than the 100000000 asked for") != std::string::npos);
+  CHECK_FALSE(log.events_after_collisions({2, 1}));
+}
+
 TEST_CASE("Log::open refuses what is not a log, naming the file", "[replay][log][errors]") {
   auto missing = ede::Log::open(temp_path("missing.ede"));
   REQUIRE_FALSE(missing);

@@ -140,6 +140,42 @@ TEST_CASE("ede-replay --event N is the state after N events", "[tool][ede-replay
   CHECK(initial.out == replay(log + " --at 0", "by-event-at0").out);
 }
 
+TEST_CASE("ede-replay state --collisions-per-disk and export --every-collisions-per-disk", "[tool][ede-replay]") {
+  const std::string log = make_log("by-collisions.ede", "examples/scenes/periodic.toml", kPeriodic);
+  const ToolRun all = replay("events " + log, "by-coll-list");
+  REQUIRE(all.status == 0);
+  const auto rows = lines(all.out);
+  const std::size_t disks = open_reader(log)->header().disks;
+  // The state after the event that is the ceil(1.5 N / 2)-th pair collision.
+  const std::size_t target = std::size_t(std::ceil(1.5 * double(disks) / 2));
+  std::size_t pairs = 0, n = 0;
+  for (std::size_t k = 1; k < rows.size() && pairs < target; ++k)
+    if (csv_fields(rows[k])[2] == "pair") ++pairs, n = k;  // row k is event k - 1: n events through it
+  REQUIRE(pairs == target);
+  const ToolRun by_collisions = replay(log + " --collisions-per-disk 1.5", "by-coll");
+  REQUIRE(by_collisions.status == 0);
+  CHECK(by_collisions.out == replay(log + " --event " + std::to_string(n), "by-coll-event").out);
+  // Past the log's pair collisions: a clear error.
+  const ToolRun past = replay(log + " --collisions-per-disk 1e9", "by-coll-past");
+  CHECK(past.status == 1);
+  CHECK(past.err.find("pair collisions, fewer than") != std::string::npos);
+  // Frames every 0.5 collisions per disk, from 0 to the last complete mark.
+  const std::string xyz = test_file("by-collisions.xyz");
+  REQUIRE(replay("export " + log + " -o " + xyz + " --every-collisions-per-disk 0.5", "by-coll-xyz").status == 0);
+  std::ifstream in(xyz);
+  std::string line;
+  int frames = 0;
+  for (std::size_t k = 0; std::getline(in, line); ++k)
+    if (line.find("Lattice=") != std::string::npos) ++frames;
+  std::size_t total_pairs = 0;
+  for (std::size_t k = 1; k < rows.size(); ++k) total_pairs += csv_fields(rows[k])[2] == "pair" ? 1 : 0;
+  int expected = 0;
+  for (int k = 0; std::ceil(0.5 * k * double(disks) / 2) <= double(total_pairs); ++k) ++expected;
+  CHECK(frames == expected);
+  CHECK(frames > 3);
+  CHECK(replay("export " + log + " -o " + test_file("x.gsd") + " --every-collisions-per-disk 0.5", "coll-gsd").status == 2);
+}
+
 TEST_CASE("ede-replay info summarises a log without replaying it", "[tool][ede-replay]") {
   const std::string log_path = test_file("info.ede");
   const ToolRun sim =

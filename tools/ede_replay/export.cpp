@@ -2,6 +2,8 @@
 //
 //   ede-replay export LOG -o run.xyz [--at T|end | --from T0 --to T1 (--frames N | --every DT)]
 //   ede-replay export LOG -o run.gsd ...
+//   ede-replay export LOG -o run.xyz --every-collisions-per-disk K   (XYZ: the states right after the pair
+//                                     collisions that bring the count to ceil(k K N / 2), k = 0, 1, ...)
 //
 // Extended XYZ is written here, from the public API, with every number's exact digits (exact_text): one
 // frame per time, z = 0, the box as Lattice with a third axis of length 1, pbc, Time, and the properties
@@ -14,7 +16,9 @@
 // Rejected: a C++ GSD writer of our own (a second implementation of a format with a maintained one).
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cerrno>
 #include <cstring>
 #include <cstdio>
@@ -32,6 +36,7 @@ struct ExportOptions {
   std::string log, output, format, at, from, to;
   std::optional<unsigned> frames;
   std::optional<double> every;
+  std::optional<double> every_collisions;
 };
 
 constexpr std::size_t kMaxFrames = 1'000'000;
@@ -76,14 +81,37 @@ void write_xyz_frame(std::FILE* out, const State& s, ScalarKind scalar) {
   }
 }
 
-int export_xyz(const Log& log, const std::vector<Time>& times, const std::string& path) {
+// A frame is a time, or a number of events (the state right after a collision count).
+struct Frame {
+  Time time = 0;
+  std::optional<std::uint64_t> events;
+};
+
+// The frames every K collisions per disk, from 0 to the log's last pair collision.
+Result<std::vector<Frame>> collision_frames(const Log& log, double every) {
+  auto counts = log.count_events();
+  if (!counts) return counts.error();
+  const double pairs = double(counts.value().by_kind[int(EventKind::Pair)]);
+  const double per_disk = 2 * pairs / double(std::max<std::uint64_t>(log.info().disks, 1));
+  std::vector<double> marks;
+  // k K N / 2 <= pairs, with k K computed afresh each time (no drift from repeated sums).
+  for (std::size_t k = 0; double(k) * every <= per_disk && marks.size() < kMaxFrames; ++k) marks.push_back(double(k) * every);
+  while (!marks.empty() && std::ceil(marks.back() * double(log.info().disks) / 2) > pairs) marks.pop_back();
+  auto events = log.events_after_collisions(marks);
+  if (!events) return events.error();
+  std::vector<Frame> frames;
+  for (const std::uint64_t n : events.value()) frames.push_back({0, n});
+  return frames;
+}
+
+int export_xyz(const Log& log, const std::vector<Frame>& frames, const std::string& path) {
   if (log.info().species_names.size() > kElements.size())
     return fail(path + ": XYZ export names species by chemical element, and this log has more than " +
                 std::to_string(kElements.size()) + " species");
   std::FILE* out = std::fopen(path.c_str(), "w");
   if (!out) return fail("cannot write '" + path + "': " + std::strerror(errno));
-  for (const Time t : times) {
-    auto s = log.state_at(t);
+  for (const Frame& f : frames) {
+    auto s = f.events ? log.state_at_event(*f.events) : log.state_at(f.time);
     if (!s) return std::fclose(out), fail(s.error().message);
     write_xyz_frame(out, s.value(), log.info().scalar);
   }
@@ -131,12 +159,24 @@ int run_export(const ExportOptions& opt) {
     return usage_error("export: --format is xyz or gsd, got '" + format + "'");
   if (!opt.at.empty() && (!opt.from.empty() || !opt.to.empty() || opt.frames || opt.every))
     return usage_error("export: --at exports one time; give it alone, or --from/--to with --frames or --every");
+  if (opt.every_collisions && (!opt.at.empty() || !opt.from.empty() || !opt.to.empty() || opt.frames || opt.every))
+    return usage_error("export: --every-collisions-per-disk exports the whole log by collision count; give it alone");
+  if (opt.every_collisions && format == "gsd")
+    return usage_error("export: --every-collisions-per-disk writes XYZ only (GSD frames are exported by time); "
+                       "use -o FILE.xyz");
   auto log = open_log(opt.log);
   if (!log) return fail(log.error().message);
+  if (opt.every_collisions) {
+    auto frames = collision_frames(log.value(), *opt.every_collisions);
+    if (!frames) return fail(frames.error().message);
+    return export_xyz(log.value(), frames.value(), opt.output);
+  }
   auto times = export_times(log.value(), opt);
   if (!times) return fail(times.error().message);
-  return format == "xyz" ? export_xyz(log.value(), times.value(), opt.output)
-                         : export_gsd(log.value(), times.value(), opt.output);
+  if (format == "gsd") return export_gsd(log.value(), times.value(), opt.output);
+  std::vector<Frame> frames;
+  for (const Time t : times.value()) frames.push_back({t, std::nullopt});
+  return export_xyz(log.value(), frames, opt.output);
 }
 
 }  // namespace
@@ -154,10 +194,15 @@ Command add_export_command(CLI::App& app) {
   auto* frames = cmd->add_option("--frames", opt->frames, "N times evenly spaced from T0 to T1, both included")
                      ->check(CLI::PositiveNumber);
   auto* every = cmd->add_option("--every", opt->every, "times T0 + k DT up to T1")->check(CLI::PositiveNumber);
+  cmd->add_option("--every-collisions-per-disk", opt->every_collisions,
+                  "XYZ frames right after the pair collisions that bring the count to ceil(k K N / 2), k = 0, 1, ... "
+                  "(the schedules' collisions per disk), to the log's last")
+      ->check(CLI::PositiveNumber);
   frames->excludes(every);
   at->excludes(from)->excludes(to)->excludes(frames)->excludes(every);
   return [opt] {
-    if (opt->at.empty() && opt->from.empty() && opt->to.empty() && !opt->frames && !opt->every) opt->at = "end";
+    if (opt->at.empty() && opt->from.empty() && opt->to.empty() && !opt->frames && !opt->every && !opt->every_collisions)
+      opt->at = "end";
     return run_export(*opt);
   };
 }

@@ -160,6 +160,11 @@ class Log {
                                    unsigned threads = 0) const;
   // Counts by kind from the chunks' kind columns alone (no replay).
   Result<EventCounts> count_events() const;
+  // For each c (ascending, >= 0) the number of events after which the state is the one right after the
+  // pair collision that brings the pair count to ceil(c N / 2) (N disks): the schedules' "collisions per
+  // disk" ([[actions]] collisions_per_disk), so state_at_event(n) is the snapshot a scheduled action sees.
+  // From the kind columns alone (no replay). Fails, naming the log's count, past its last pair collision.
+  Result<std::vector<std::uint64_t>> events_after_collisions(const std::vector<double>& collisions_per_disk) const;
 
   // Re-runs the logged scene and compares everything with the log, bit for bit.
   Result<VerifyReport> verify(const VerifyOptions& options = {}) const;

@@ -26,7 +26,10 @@ bool loggable(unsigned char kind) {
   }
 }
 
-Status count_chunk(const LogReader& log, const LogRecordRef& ref, LogKindCounts& out) {
+// Calls f(kind) for each event of the chunk, in order, after checking its kinds column; f returns false
+// to stop. Version 2's TC flag bit is taken off the kind.
+template <class F>
+Status visit_chunk_kinds(const LogReader& log, const LogRecordRef& ref, F f) {
   auto words = log.load_message(ref.offset, ref.payload_size);
   if (!words) return words.error();
   const std::string where = log.path() + " (chunk at byte " + std::to_string(ref.offset) + ")";
@@ -44,12 +47,11 @@ Status count_chunk(const LogReader& log, const LogRecordRef& ref, LogKindCounts&
       const unsigned char k = static_cast<unsigned char>(byte & ~flag);
       if (!loggable(k) || ((byte & flag) && k != 0 && k != 1))
         return Error{where + ": unknown event kind " + std::to_string(byte)};
-      ++out.by_kind[k];
+      if (!f(k)) break;
     }
   } catch (const kj::Exception& e) {
     return Error{where + ": malformed (" + e.getDescription().cStr() + ")"};
   }
-  ++out.chunks_read;
   return Ok{};
 }
 
@@ -57,9 +59,38 @@ Status count_chunk(const LogReader& log, const LogRecordRef& ref, LogKindCounts&
 
 Result<LogKindCounts> count_logged_kinds(const LogReader& log) {
   LogKindCounts counts;
-  for (const LogRecordRef& ref : log.chunks())
-    if (Status s = count_chunk(log, ref, counts); !s) return s.error();
+  for (const LogRecordRef& ref : log.chunks()) {
+    if (Status s = visit_chunk_kinds(log, ref, [&](unsigned char k) { return ++counts.by_kind[k], true; }); !s)
+      return s.error();
+    ++counts.chunks_read;
+  }
   return counts;
+}
+
+Result<std::vector<std::uint64_t>> events_through_pairs(const LogReader& log, const std::vector<std::uint64_t>& pairs) {
+  std::vector<std::uint64_t> out;
+  out.reserve(pairs.size());
+  std::uint64_t seen = 0;  // pair collisions among the events before `event`
+  std::uint64_t event = 0;
+  std::size_t next = 0;
+  const auto settle = [&] {  // every target reached so far
+    while (next < pairs.size() && pairs[next] <= seen) out.push_back(pairs[next] == 0 ? 0 : event), ++next;
+  };
+  settle();
+  for (const LogRecordRef& ref : log.chunks()) {
+    if (next == pairs.size()) break;
+    event = ref.first_event;
+    Status s = visit_chunk_kinds(log, ref, [&](unsigned char k) {
+      ++event;
+      if (k == static_cast<unsigned char>(EventKind::Pair)) ++seen, settle();
+      return next < pairs.size();
+    });
+    if (!s) return s.error();
+  }
+  if (next < pairs.size())
+    return Error{log.path() + ": the log holds " + std::to_string(seen) + " pair collisions, fewer than the " +
+                 std::to_string(pairs[next]) + " asked for"};
+  return out;
 }
 
 }  // namespace ede

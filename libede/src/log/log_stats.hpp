@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "core/event.hpp"
 #include "log/log_reader.hpp"
@@ -29,5 +30,11 @@ struct LogKindCounts {
 // byte offset) if a chunk cannot be read, its kinds column does not hold one byte per event, or a byte
 // is not a kind a log may hold (pair, wall, wrap, action).
 Result<LogKindCounts> count_logged_kinds(const LogReader& log);
+
+// For each target P in `pairs` (ascending), the number of events up to and including the log's P-th pair
+// collision (0 for P = 0): the state after that many events is the state right after that collision.
+// From the kinds columns alone, in one pass that stops at the last target. Fails if the log holds fewer
+// pair collisions than a target.
+Result<std::vector<std::uint64_t>> events_through_pairs(const LogReader& log, const std::vector<std::uint64_t>& pairs);
 
 }  // namespace ede

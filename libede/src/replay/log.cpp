@@ -385,6 +385,19 @@ Result<EventCounts> Log::count_events() const {
   return c;
 }
 
+Result<std::vector<std::uint64_t>> Log::events_after_collisions(const std::vector<double>& collisions_per_disk) const {
+  std::vector<std::uint64_t> pairs;
+  for (const double c : collisions_per_disk) {
+    if (!std::isfinite(c) || c < 0)
+      return Error{"collisions per disk must be finite and >= 0, got " + std::to_string(c)};
+    // As the engine counts its schedules (engine_core.hpp, pairs_for).
+    pairs.push_back(static_cast<std::uint64_t>(std::ceil(c * double(impl_->info.disks) / 2)));
+    if (pairs.size() > 1 && pairs.back() < pairs[pairs.size() - 2])
+      return Error{"collisions per disk must be given in ascending order"};
+  }
+  return events_through_pairs(*impl_->reader, pairs);
+}
+
 Result<std::string> Log::content_digest() const { return log_content_digest(impl_->reader); }
 
 Status Log::convert(const std::string& out_path, std::uint32_t format_version) const {
