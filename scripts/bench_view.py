@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """ede-view's benchmark: frames per second it serves and the page draws, and seek times in a large log.
 
-  scripts/bench_view.py [--build build] [--seconds 5] [--events 10000000] [--sizes 10000,100000,1000000]
+  scripts/bench_view.py [--build build] [--seconds 5] [--events 10000000 (0: no seeks)] [--sizes 10000,100000,1000000]
 
 1. Live runs of examples/bench/gas-N{10^4,10^5,10^6}-phi0.3-walls.toml at full engine speed: frames
    fetched back to back over HTTP for --seconds (what one tab polling as fast as it can gets), their size,
@@ -31,10 +31,21 @@ sys.path.insert(0, os.path.join(HERE, "../tests/tools/view"))
 import viewlib  # noqa: E402
 
 
+def wait_running(server, seconds=120):
+    """Until the engine has processed events (10^6 disks take seconds to place and predict under load)."""
+    end = time.time() + seconds
+    while time.time() < end:
+        _, st = server.json("/api/run/status")
+        if st["events"] > 0 and st["events_per_second"] > 0:
+            return
+        time.sleep(0.2)
+
+
 def live(server, scene, seconds):
     server.json("/api/run/setup", {"scene": "0:" + scene, "until": 1e6})
     server.post("/api/run/pace?pace=0")
     server.post("/api/run/go")
+    wait_running(server)
     time.sleep(1.0)
     _, st = server.json("/api/run/status")
     ev_unwatched = st["events_per_second"]
@@ -64,6 +75,7 @@ def browser_fps(server, scene, seconds, draw):
         browser.wait("edeView.last && edeView.last.info.status === 'paused'", 120)
         browser.eval("document.getElementById('fastest').click()")
         browser.eval("document.getElementById('go').click()")
+        wait_running(server)
         time.sleep(1.0)
         rates, draw_ms = [], []
         f0, t0 = browser.eval("edeView.frames"), time.perf_counter()
@@ -129,12 +141,13 @@ def main():
             fps, size, ev0, ev1 = live(server, scene, a.seconds)
             pages = {draw: browser_fps(server, scene, a.seconds, draw) for draw in ("2d", "webgl")}
             rows.append((n, fps, size / 1e6, ev0 / 1e6, ev1 / 1e6, pages, default_drawer(server, scene)))
-        log = os.path.join(server.logs, "large.ede")
-        start = time.perf_counter()
-        viewlib.make_log(log, "examples/bench/gas-N10000-phi0.3-walls.toml", [f"stop.events={a.events}"])
-        made = time.perf_counter() - start
-        _, info = server.json("/api/log/info?name=0:large.ede")
-        med, worst = seeks(server, "0:large.ede", info["end"])
+        if a.events > 0:
+            log = os.path.join(server.logs, "large.ede")
+            start = time.perf_counter()
+            viewlib.make_log(log, "examples/bench/gas-N10000-phi0.3-walls.toml", [f"stop.events={a.events}"])
+            made = time.perf_counter() - start
+            _, info = server.json("/api/log/info?name=0:large.ede")
+            med, worst = seeks(server, "0:large.ede", info["end"])
     finally:
         server.close()
     print("| disks | frames/s served (HTTP, back to back) | MB/frame | engine M events/s unwatched | watched |"
@@ -151,6 +164,8 @@ def main():
         print(f"| {n} | {fps:.0f} | {mb:.2f} | {ev0:.2f} | {ev1:.2f} | {cells[0]} | {cells[1]} | {default} |")
     print()
     print(f"WebGL renderer: {renderer}")
+    if a.events <= 0:
+        return
     print()
     print(f"Seeks in a log of {info['events']} events, N = {info['disks']} (written in {made:.0f} s, "
           f"{info['keyframes']} keyframes): frame at a random time, HTTP included: median {med * 1e3:.0f} ms, "

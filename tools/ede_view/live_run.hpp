@@ -52,8 +52,8 @@ class LiveRuns {
   Status reverse();
   Status finish();  // ends the run here: its log complete at the current time (Simulation::finish)
   void set_pace(double sim_time_per_second);  // 0: as fast as the engine goes
-  // The latest published state as a frame (frame.hpp); nothing before the first SETUP.
-  std::optional<std::string> frame(std::size_t max_disks);
+  // The latest published state as a frame (frame.hpp); null before the first SETUP.
+  std::shared_ptr<const std::string> frame(const FrameRequest& request);
   std::string status_json();
 
   struct Run;  // the worker's state (live_run.cpp)

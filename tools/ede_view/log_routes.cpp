@@ -113,8 +113,8 @@ void add_log_routes(httplib::Server& server, const std::vector<Root>& roots) {
   server.Get("/api/log/frame", [roots, store](const httplib::Request& req, httplib::Response& res) {
     auto entry = find_log(roots, *store, req, res);
     if (!entry) return;
-    const auto max_disks = number_param(req, res, "max", double(kDefaultMaxDisks));
-    if (!max_disks) return;
+    const auto request = frame_request_param(req, res, kDefaultMaxDisks);
+    if (!request) return;
     if (!req.has_param("t")) return send_error(res, 400, "missing parameter 't' (a time, or 'end')");
     std::lock_guard lock(entry->mutex);
     const Log& log = *entry->log;
@@ -148,9 +148,7 @@ void add_log_routes(httplib::Server& server, const std::vector<Root>& roots) {
       entry->segments = scene ? segments_field(scene.value()) : std::string();
     }
     extras.json_fields = "\"t_request\":" + nlohmann::json(t_text).dump() + *entry->segments;
-    std::size_t max = *max_disks >= 1 ? std::size_t(*max_disks) : kDefaultMaxDisks;
-    res.set_header("Cache-Control", "no-store");
-    res.set_content(pack_frame(s, *entry->reference, extras, max), "application/octet-stream");
+    send_frame(res, std::make_shared<const std::string>(pack_frame(s, *entry->reference, extras, *request)));
   });
 }
 

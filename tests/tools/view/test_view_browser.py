@@ -12,7 +12,6 @@ the test asks < 0.15 after 20 collisions per disk, and > 0.8 at the start (every
 """
 import math
 import os
-import struct
 import sys
 import time
 
@@ -29,10 +28,6 @@ def tv_distance(info):
     cdf = lambda v: 1 - math.exp(-m * v * v / (2 * kT))  # noqa: E731
     inside = sum(abs(c / n - (cdf((k + 1) * width) - cdf(k * width))) for k, c in enumerate(counts))
     return 0.5 * (inside + abs(h["outside"] / n - (1 - cdf(h["hi"]))))
-
-
-def f32(text):
-    return struct.unpack("<f", struct.pack("<f", float(text)))[0]
 
 
 def main():
@@ -82,16 +77,28 @@ def main():
         time.sleep(0.4)
         check(browser.screenshot("#disks") == p1, "PAUSE stops the disks: two screenshots are the same")
 
-        # Scrubbing a log: the exact state of ede-replay --at, at times between keyframes.
+        # Scrubbing a log: the exact state of ede-replay --at, at times between keyframes (exact frames,
+        # float64, as the page asks for them with edeView.exact or ?exact=1), and the compact frames the
+        # page asks for by default within half a 16-bit step of it.
         end = browser.eval("(async () => (await (await fetch('/api/log/info?name=0:gas.ede')).json()).end)()")
+        browser.eval("edeView.exact = true")
         for t in ["0.5", repr(end * 0.731), "0"]:
             browser.eval(f"edeView.openLog('0:gas.ede', '{t}')")
             browser.wait(f"edeView.last && edeView.last.t_request === '{t}'", 20)
             drawn = browser.eval("edeView.drawn()")
             rows = replay_at(log, t)
-            same = len(rows) == drawn["n"] and all(
-                f32(row["x"]) == drawn["x"][i] and f32(row["y"]) == drawn["y"][i] for i, row in enumerate(rows))
-            check(same, f"the page drew at t = {t} exactly the positions of ede-replay --at {t} ({len(rows)} disks)")
+            same = drawn["packing"] == "exact" and len(rows) == drawn["n"] and all(
+                float(row["x"]) == drawn["x"][i] and float(row["y"]) == drawn["y"][i] for i, row in enumerate(rows))
+            check(same, f"the page drew at t = {t} exactly the positions of ede-replay --at {t} ({len(rows)} disks, float64)")
+        browser.eval("edeView.exact = false")
+        t = repr(end * 0.4)
+        browser.eval(f"edeView.openLog('0:gas.ede', '{t}')")
+        browser.wait(f"edeView.last && edeView.last.t_request === '{t}'", 20)
+        drawn, rows = browser.eval("edeView.drawn()"), replay_at(log, t)
+        half = 0.5 * drawn["info"]["lx"] / 65535 * 1.0001 + 1e-7  # + the float32 the page draws
+        err = max(max(abs(float(row["x"]) - drawn["x"][i]), abs(float(row["y"]) - drawn["y"][i])) for i, row in enumerate(rows))
+        check(drawn["packing"] == "compact" and err <= half,
+              f"compact frames (the default): the page drew within {err:.1e} <= {half:.1e} of ede-replay --at {t}")
         if shots:  # the crater view: a crater log coloured by displacement
             make_log(os.path.join(server.logs, "crater.ede"), "examples/crater.toml")
             browser.eval("document.getElementById('colour').value = 'displacement';"

@@ -75,7 +75,7 @@ def back_at_start(server, st, t_back, label):
     status, raw, _ = server.get(f"/api/log/frame?name={name}&t={t_back!r}&exact=1")
     check(status == 200, f"{label}: the log reads at 2 t_P = {t_back!r}")
     back = parse_frame(raw)[1]
-    err = max(max(abs(back[0][i] - start[0][i]), abs(back[1][i] - start[1][i])) for i in range(len(start[0])))
+    err = max(max(abs(back["x"][i] - start["x"][i]), abs(back["y"][i] - start["y"][i])) for i in range(len(start["x"])))
     check(err < 1e-5, f"{label}: at twice the reversal's time every disk is back at its start (largest error {err:.1e} < 1e-5)")
 
 

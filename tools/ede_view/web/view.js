@@ -4,7 +4,7 @@
 // simply skips frames. window.edeView exposes what was drawn (positions, time, counts) for the tests
 // (tests/tools/view/) and for anyone curious, in the browser's console.
 // Disks are drawn with WebGL2 where the browser has it (gl_draw.js: one instanced point per disk, the
-// circle cut in the fragment shader, straight from the frame's float32 columns), else with the 2D canvas
+// circle cut in the fragment shader, from the frame's decoded float32 columns), else with the 2D canvas
 // below; the box and wall segments are drawn on a transparent 2D canvas over the WebGL one. The
 // histograms and monitors are redrawn at most 10 times a second while frames stream (they are text and
 // bars nobody reads at 60 Hz, and their layout cost the main thread as much as the disks).
@@ -34,7 +34,10 @@ async function api(path, options) {
   return res;
 }
 
-// Frame: "EDEF" | u32 json bytes | JSON | u32 n | f32 x, y, r, speed, species, displacement.
+// Frame (frame.hpp): "EDEF" | u32 json bytes | JSON | u32 n | u32 0 | the columns JSON "columns" lists,
+// each padded to 8 bytes. Compact frames carry x, y (and r when radii differ) as u16 fixed point over the
+// box, decoded here into float32 for drawing; exact ones (?exact=1) carry float64, kept in f.exact.
+const COLUMN_TYPES = { u8: Uint8Array, u16: Uint16Array, f32: Float32Array, f64: Float64Array };
 function parseFrame(buffer) {
   const dv = new DataView(buffer);
   const magic = String.fromCharCode(dv.getUint8(0), dv.getUint8(1), dv.getUint8(2), dv.getUint8(3));
@@ -42,32 +45,53 @@ function parseFrame(buffer) {
   const jsonBytes = dv.getUint32(4, true);
   const info = JSON.parse(new TextDecoder().decode(new Uint8Array(buffer, 8, jsonBytes)));
   const n = dv.getUint32(8 + jsonBytes, true);
-  let at = 12 + jsonBytes;
-  const col = () => { const a = new Float32Array(buffer, at, n); at += 4 * n; return a; };
-  return { info, n, x: col(), y: col(), r: col(), speed: col(), species: col(), displacement: col() };
+  let at = 16 + jsonBytes;
+  const cols = {};
+  for (const [name, type] of info.columns) {
+    const T = COLUMN_TYPES[type];
+    cols[name] = new T(buffer, at, n);
+    at += Math.ceil(n * T.BYTES_PER_ELEMENT / 8) * 8;
+  }
+  const f = { info, n, colour: cols.colour };
+  if (info.packing === 'exact') {
+    f.exact = { x: cols.x, y: cols.y, r: cols.r };
+    f.x = Float32Array.from(cols.x);
+    f.y = Float32Array.from(cols.y);
+    f.r = Float32Array.from(cols.r);
+  } else {
+    const decode = (q, scale) => { const v = new Float32Array(n); for (let i = 0; i < n; i++) v[i] = q[i] * scale; return v; };
+    f.x = decode(cols.x, info.scale[0]);
+    f.y = decode(cols.y, info.scale[1]);
+    f.r = cols.r ? decode(cols.r, info.scale[2]) : new Float32Array(n).fill(info.radius);
+  }
+  return f;
 }
+
+// The frames the page asks for: coloured as the page colours, exact when the page's address says
+// ?exact=1 (or edeView.exact is set: the tests compare exact positions with ede-replay --at).
+const pageParams = new URLSearchParams(location.search);
+view.exact = pageParams.get('exact') === '1';
+function frameParams() { return 'colour=' + $('colour').value + (view.exact ? '&exact=1' : ''); }
 
 const SPECIES = ['#4fc3f7', '#ffb74d', '#81c784', '#e57373', '#ba68c8', '#fff176', '#a1887f', '#90a4ae'];
 const CLASSES = ['#2962ff', '#00c853', '#ff1744'];  // GasLab: slow blue, medium green, fast red
 const RAMP = ['#313695', '#4575b4', '#74add1', '#abd9e9', '#fee090', '#fdae61', '#f46d43', '#d73027', '#a50026'];
 
-// The colour group of every disk: an index into the palette returned.
+// The colour group of every disk (an index into the palette returned), from the frame's colour byte: the
+// speed class, the species, or the displacement in 255ths of the frame's largest (frame.hpp).
 function colourGroups(f) {
-  const mode = $('colour').value, g = new Uint8Array(f.n);
-  if (mode === 'species') {
-    for (let i = 0; i < f.n; i++) g[i] = f.species[i] % SPECIES.length;
+  const by = f.info.colour.by, c = f.colour;
+  if (by === 'species') {
+    const g = new Uint8Array(f.n);
+    for (let i = 0; i < f.n; i++) g[i] = c[i] % SPECIES.length;
     return { groups: g, palette: SPECIES };
   }
-  if (mode === 'displacement') {
-    let max = 0;
-    for (let i = 0; i < f.n; i++) max = Math.max(max, f.displacement[i]);
-    const k = max > 0 ? (RAMP.length - 1) / max : 0;
-    for (let i = 0; i < f.n; i++) g[i] = Math.round(f.displacement[i] * k);
+  if (by === 'displacement') {
+    const g = new Uint8Array(f.n), k = (RAMP.length - 1) / 255;
+    for (let i = 0; i < f.n; i++) g[i] = Math.round(c[i] * k);
     return { groups: g, palette: RAMP };
   }
-  const [lo, hi] = f.info.class_speeds;
-  for (let i = 0; i < f.n; i++) g[i] = f.speed[i] < lo ? 0 : f.speed[i] > hi ? 2 : 1;
-  return { groups: g, palette: CLASSES };
+  return { groups: c, palette: CLASSES };
 }
 
 // Colours as the canvas's pixels hold them (RGBA bytes read as one little-endian uint32).
@@ -84,7 +108,7 @@ let image = null;
 // The WebGL2 disk layer (gl_draw.js), or null: then the 2D canvas draws the disks too.
 // ?draw=2d or ?draw=webgl force a path (for the benchmark); by default WebGL unless it is software-rendered
 // and the disks are small enough for the 2D pixel path (gl_draw.js says why).
-const drawMode = new URLSearchParams(location.search).get('draw') || 'auto';
+const drawMode = pageParams.get('draw') || 'auto';
 const gl = drawMode === '2d' ? null : makeGlDisks($('disks-gl'));
 view.renderer = gl ? gl.renderer : 'none (2D canvas)';
 
@@ -275,8 +299,9 @@ function show(f, streaming) {
   }
   view.drawMs = performance.now() - t0;
   view.frames++;
+  const drawn = f.exact || f;
   view.last = { time: f.info.time, t_request: f.info.t_request, events: f.info.events, n: f.n,
-    stride: f.info.stride, x: f.x, y: f.y, r: f.r, info: f.info };
+    stride: f.info.stride, x: drawn.x, y: drawn.y, r: drawn.r, packing: f.info.packing, info: f.info };
 }
 
 async function fetchFrame(path, streaming) {
@@ -383,7 +408,7 @@ function startPlay(direction) {
 let pending = null;
 
 function liveFetch() {
-  return api('/api/run/frame').then((res) => res.arrayBuffer());
+  return api('/api/run/frame?' + frameParams()).then((res) => res.arrayBuffer());
 }
 
 async function tick() {
@@ -406,7 +431,8 @@ async function tick() {
       }
       if (logWanted !== null && logWanted !== logShown) {
         const want = logWanted;
-        await fetchFrame('/api/log/frame?name=' + encodeURIComponent($('log').value) + '&t=' + encodeURIComponent(want), play !== 0);
+        await fetchFrame('/api/log/frame?name=' + encodeURIComponent($('log').value) + '&t=' + encodeURIComponent(want) +
+          '&' + frameParams(), play !== 0);
         logShown = want;
       }
     }
