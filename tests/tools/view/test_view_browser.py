@@ -99,13 +99,18 @@ def main():
         err = max(max(abs(float(row["x"]) - drawn["x"][i]), abs(float(row["y"]) - drawn["y"][i])) for i, row in enumerate(rows))
         check(drawn["packing"] == "compact" and err <= half,
               f"compact frames (the default): the page drew within {err:.1e} <= {half:.1e} of ede-replay --at {t}")
-        if shots:  # the crater view: a crater log coloured by displacement
-            make_log(os.path.join(server.logs, "crater.ede"), "examples/crater.toml")
-            browser.eval("document.getElementById('colour').value = 'displacement';"
-                         "document.getElementById('colour').dispatchEvent(new Event('change'))")
-            browser.eval("edeView.openLog('0:crater.ede', 'end')")
-            browser.wait("edeView.last.t_request === 'end'", 20)
-            time.sleep(0.3)
+        # The crater view: a crater log opens coloured by displacement, with its surface profiles drawn and
+        # the crater's metrics in the monitors (their numbers: test_view_crater.py).
+        make_log(os.path.join(server.logs, "crater.ede"), "examples/crater.toml")
+        browser.eval("edeView.openLog('0:crater.ede', 'end')")
+        browser.wait("edeView.last.t_request === 'end' && edeView.last.info.crater", 20)
+        time.sleep(0.3)
+        monitors = browser.eval("document.getElementById('monitors').textContent")
+        colour = browser.eval("document.getElementById('colour').value")
+        depth = browser.eval("edeView.last.info.crater.depth")
+        check("crater depth" in monitors and "bed disks displaced" in monitors and colour == "displacement" and depth > 0.1,
+              f"a crater log opens in the crater view (depth {depth:.3f} in the monitors, coloured by {colour})")
+        if shots:
             open(os.path.join(shots, "view-log.png"), "wb").write(browser.screenshot())
 
         # The WebGL disk layer (forced: the page prefers its 2D pixels where WebGL is software, as here):

@@ -181,6 +181,7 @@ function drawDisks(f) {
   }
   ctx.strokeStyle = '#666';
   ctx.strokeRect(0.5, 0.5, lx * scale - 1, ly * scale - 1);
+  if (f.info.crater && !f.info.crater.error) drawCrater(ctx, f.info.crater, scale, ly);
   if (f.info.segments) {  // the scene's wall segments
     ctx.strokeStyle = '#ddd';
     ctx.lineWidth = 2;
@@ -193,6 +194,37 @@ function drawDisks(f) {
     ctx.stroke();
     ctx.lineWidth = 1;
   }
+}
+
+// The crater view (crater_view.hpp): the bed's surface at the log's start (grey, dashed) and now (yellow),
+// as steps over the profile's bins, and the crater's extent [left, right) marked under the old surface.
+function drawCrater(ctx, c, scale, ly) {
+  const profile = (heights) => {
+    ctx.beginPath();
+    heights.forEach((h, k) => {
+      const x0 = k * c.bin_width * scale, x1 = (k + 1) * c.bin_width * scale, y = (ly - h) * scale;
+      k ? ctx.lineTo(x0, y) : ctx.moveTo(x0, y);
+      ctx.lineTo(x1, y);
+    });
+    ctx.stroke();
+  };
+  ctx.lineWidth = 2;
+  ctx.setLineDash([6, 4]);
+  ctx.strokeStyle = '#bbb';
+  profile(c.before);
+  ctx.setLineDash([]);
+  ctx.strokeStyle = '#ffd600';
+  profile(c.after);
+  if (c.has_crater) {
+    const top = Math.max(...c.before) , y = (ly - top) * scale - 8;
+    ctx.strokeStyle = '#ff5252';
+    ctx.beginPath();
+    ctx.moveTo(c.left * scale, y); ctx.lineTo(c.right * scale, y);
+    ctx.moveTo(c.left * scale, y - 5); ctx.lineTo(c.left * scale, y + 5);
+    ctx.moveTo(c.right * scale, y - 5); ctx.lineTo(c.right * scale, y + 5);
+    ctx.stroke();
+  }
+  ctx.lineWidth = 1;
 }
 
 function drawHistogram(canvasId, h, curve, means) {
@@ -275,6 +307,14 @@ function monitors(f) {
     ...(view.pressure ? [['pressure, ' + view.pressure.formula + ' (Δt ' + view.pressure.dt.toPrecision(3) + ')',
       view.pressure.value.toPrecision(4) + ' (Z ' + view.pressure.z.toPrecision(4) + ')']] : []),
     ['disks drawn', f.n.toLocaleString('en') + (i.stride > 1 ? ' (every ' + i.stride + 'th of ' + i.disks.toLocaleString('en') + ')' : '')]);
+  if (i.crater && i.crater.error) rows.push(['crater', i.crater.error]);
+  else if (i.crater) {
+    const c = i.crater;
+    rows.push(['crater depth, width', c.has_crater ? c.depth.toPrecision(4) + ', ' + c.width.toPrecision(4) + ' (x ' +
+      c.left.toPrecision(3) + '–' + c.right.toPrecision(3) + ')' : 'none yet (largest drop ' + c.depth.toPrecision(3) + ')'],
+    ['crater area', c.area.toPrecision(4)],
+    ['bed disks displaced', c.displaced + ' of ' + c.bed_disks + (c.detached ? ' (' + c.detached + ' ejecta)' : '')]);
+  }
   if (i.status) rows.push(['run', i.status]);
   if (i.log) rows.push(['log', i.log]);
   $('monitors').replaceChildren(...rows.map(([k, v]) => {
@@ -380,6 +420,10 @@ async function openLog() {
   showError('');
   try {
     logInfo = await (await api('/api/log/info?name=' + encodeURIComponent($('log').value))).json();
+    // A crater scene (a bed and a projectile): the crater view on, coloured by displacement.
+    $('crater-view').hidden = !logInfo.crater;
+    $('crater').checked = !!logInfo.crater;
+    if (logInfo.crater) $('colour').value = 'displacement';
     play = 0;
     setLogTime(logInfo.start);
   } catch (e) { logInfo = null; showError(e.message); }
@@ -432,7 +476,7 @@ async function tick() {
       if (logWanted !== null && logWanted !== logShown) {
         const want = logWanted;
         await fetchFrame('/api/log/frame?name=' + encodeURIComponent($('log').value) + '&t=' + encodeURIComponent(want) +
-          '&' + frameParams(), play !== 0);
+          '&' + frameParams() + (logInfo.crater && $('crater').checked ? '&crater=1' : ''), play !== 0);
         logShown = want;
       }
     }
@@ -453,6 +497,7 @@ async function init() {
     if (view.mode === 'log') refreshLogs(); else liveDirty = true;
   }));
   $('colour').addEventListener('change', () => { liveDirty = true; logShown = null; });
+  $('crater').addEventListener('change', () => { logShown = null; });
   $('scene').addEventListener('change', () => loadScene().catch((e) => showError(e.message)));
   $('setup').addEventListener('click', setup);
   $('go').addEventListener('click', goPause);
