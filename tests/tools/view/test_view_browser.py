@@ -112,6 +112,19 @@ def main():
               f"a crater log opens in the crater view (depth {depth:.3f} in the monitors, coloured by {colour})")
         if shots:
             open(os.path.join(shots, "view-log.png"), "wb").write(browser.screenshot())
+        # Playing the log backward from its end, then forward, at a chosen speed (simulated time per second).
+        end = browser.eval("edeView.last.time")
+        browser.eval(f"document.getElementById('play-speed').value = '{end / 4!r}'; document.getElementById('back').click()")
+        browser.wait(f"edeView.last.time < {end * 0.9!r}", 20)
+        t1 = browser.eval("edeView.last.time")
+        time.sleep(0.5)
+        t2 = browser.eval("edeView.last.time")
+        browser.eval("document.getElementById('stop').click(); document.getElementById('fwd').click()")
+        time.sleep(0.8)
+        t3 = browser.eval("edeView.last.time")
+        browser.eval("document.getElementById('stop').click()")
+        check(end > t1 > t2 and t3 > t2, f"play back from the end goes back in time ({end:.3f} > {t1:.3f} > {t2:.3f}),"
+              f" play forward forward ({t3:.3f})")
 
         # The WebGL disk layer (forced: the page prefers its 2D pixels where WebGL is software, as here):
         # it draws the disks (lit pixels about the disks' area) and they move.

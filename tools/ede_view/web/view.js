@@ -439,10 +439,13 @@ function setLogTime(t, text) {
   $('time-text').value = logWanted;
 }
 
+// Plays forward (1) or backward (-1) at the chosen speed (simulated time per second of wall time), from
+// the time shown ('end' is the log's end time).
 function startPlay(direction) {
   if (!logInfo) return;
+  const from = logWanted === 'end' ? logInfo.end : Number(logWanted ?? logInfo.start);
   play = direction;
-  playFrom = Number(logWanted ?? logInfo.start);
+  playFrom = Number.isFinite(from) ? from : logInfo.start;
   playWall = performance.now();
 }
 
