@@ -31,6 +31,15 @@ std::optional<CraterBase> crater_base(const Log& log) {
   return base;
 }
 
+Result<CraterBase> with_before(const CraterBase& base, const Log& log, Time before) {
+  auto state = log.state_at(before);
+  if (!state) return state.error();
+  CraterBase b = base;
+  b.before = positions(state.value());
+  b.before_time = double(state.value().time);
+  return b;
+}
+
 std::string crater_field(const CraterBase& base, const State& state) {
   auto report = analyze_crater(base.before, positions(state), base.bed.is_bed, base.box, CraterSettings{});
   if (!report) return ",\"crater\":" + nlohmann::json{{"error", report.error().message}}.dump();

@@ -19,13 +19,17 @@ namespace ede::view {
 // What every crater frame of one log shares: the bed, the state it is compared with, the box.
 struct CraterBase {
   BedSelection bed;
-  DiskPositions before;  // the log's start
+  DiskPositions before;  // the log's start, or the state at the time asked for (with_before)
   double before_time = 0;
   CraterBox box;
 };
 
 // The crater base of a log, or nothing when the log is not a crater scene (or cannot be read).
 std::optional<CraterBase> crater_base(const Log& log);
+
+// The same base compared with the state at `before` instead (ede-crater --before: under gravity, the bed
+// once it has settled, before the impact); fails with the log's message for a time past its end.
+Result<CraterBase> with_before(const CraterBase& base, const Log& log, Time before);
 
 // ,"crater":{...} for FrameExtras::json_fields: the profiles (bin width, heights before and after), the
 // metrics and how many bed disks moved; or ,"crater":{"error":...} when the analysis fails.

@@ -27,6 +27,8 @@ struct OpenLog {
   std::optional<double> pair_share;
   std::optional<std::string> segments;  // segments_field of the log's scene
   std::optional<std::optional<CraterBase>> crater;  // crater_base of the log, once looked for
+  std::string crater_before_text;                   // the last ?before= asked for, and its base
+  std::optional<CraterBase> crater_before;
   std::uint64_t last_use = 0;
 };
 
@@ -161,7 +163,22 @@ void add_log_routes(httplib::Server& server, const std::vector<Root>& roots) {
     const std::string crater = req.get_param_value("crater");
     if (!(crater.empty() || crater == "0" || crater == "1"))
       return send_error(res, 400, "parameter 'crater' must be 1 or 0, not '" + crater.substr(0, 40) + "'");
-    if (crater == "1" && crater_of(*entry)) extras.json_fields += crater_field(*crater_of(*entry), s);
+    if (crater == "1" && crater_of(*entry)) {
+      const std::string before = req.get_param_value("before");
+      if (before.empty()) {
+        extras.json_fields += crater_field(*crater_of(*entry), s);
+      } else {
+        if (!entry->crater_before || before != entry->crater_before_text) {
+          auto tb = parse_exact(before, log.info().scalar);
+          if (!tb) return send_error(res, 400, "parameter 'before': " + tb.error().message);
+          auto base = with_before(*crater_of(*entry), log, tb.value());
+          if (!base) return send_error(res, 400, "parameter 'before': " + base.error().message);
+          entry->crater_before = std::move(base).value();
+          entry->crater_before_text = before;
+        }
+        extras.json_fields += crater_field(*entry->crater_before, s);
+      }
+    }
     send_frame(res, std::make_shared<const std::string>(pack_frame(s, *entry->reference, extras, *request)));
   });
 }

@@ -2,7 +2,7 @@
 summary, and its frames asked with ?crater=1 carry the bed's surface profiles and the crater's metrics,
 which equal what `ede-crater measure LOG --at T -o profiles.csv` writes (the same library analysis on the
 same states: the heights to 1e-12, the metrics derived from the CSV's columns to 1e-12); a gas log is not
-a crater scene; a bad ?crater= gets 400.
+a crater scene; a bad ?crater= gets 400. ?before=T compares with the bed at T, as ede-crater --before T.
 """
 import csv
 import os
@@ -33,13 +33,21 @@ def main():
         status, raw, _ = server.get("/api/log/frame?name=0:crater.ede&t=0&crater=2")
         check(status == 400, "?crater=2 gets 400")
 
-        for t in ["0.1", "end"]:
-            status, raw, _ = server.get(f"/api/log/frame?name=0:crater.ede&t={t}&crater=1&colour=displacement")
+        status, raw, _ = server.get("/api/log/frame?name=0:crater.ede&t=0&crater=1&before=9")
+        check(status == 400 and "before" in raw.decode(), f"?before= past the log's end gets 400: {raw[:160]!r}")
+        status, raw, _ = server.get("/api/log/frame?name=0:crater.ede&t=0&crater=1&before=x")
+        check(status == 400, "?before=x gets 400")
+
+        for t, before in [("0.1", None), ("end", None), ("end", "0.05")]:
+            ask = f"&before={before}" if before else ""
+            status, raw, _ = server.get(f"/api/log/frame?name=0:crater.ede&t={t}&crater=1&colour=displacement{ask}")
             c = parse_frame(raw)[0]["crater"]
-            out = os.path.join(server.dir, f"profile-{t}.csv")
-            r = subprocess.run([os.path.join(tools_dir(), "ede-crater"), "measure", crater_log, "--at", t, "-o", out],
-                               capture_output=True, text=True)
-            check(r.returncode == 0, f"ede-crater measures the log at {t}")
+            out = os.path.join(server.dir, f"profile-{t}-{before}.csv")
+            r = subprocess.run([os.path.join(tools_dir(), "ede-crater"), "measure", crater_log, "--at", t, "-o", out] +
+                               (["--before", before] if before else []), capture_output=True, text=True)
+            check(r.returncode == 0 and c["before_time"] == float(before or 0),
+                  f"ede-crater measures the log at {t} (before: {before or 'the start'})")
+            t = t + (f", before {before}" if before else "")
             rows = list(csv.DictReader(open(out)))
             same = len(rows) == len(c["before"]) == len(c["after"]) and all(
                 close(float(row["h_before"]), c["before"][k]) and close(float(row["h_after"]), c["after"][k])

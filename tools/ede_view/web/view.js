@@ -421,7 +421,7 @@ async function openLog() {
   try {
     logInfo = await (await api('/api/log/info?name=' + encodeURIComponent($('log').value))).json();
     // A crater scene (a bed and a projectile): the crater view on, coloured by displacement.
-    $('crater-view').hidden = !logInfo.crater;
+    $('crater-view').hidden = $('crater-before-label').hidden = !logInfo.crater;
     $('crater').checked = !!logInfo.crater;
     if (logInfo.crater) $('colour').value = 'displacement';
     play = 0;
@@ -447,6 +447,13 @@ function startPlay(direction) {
   play = direction;
   playFrom = Number.isFinite(from) ? from : logInfo.start;
   playWall = performance.now();
+}
+
+// The crater view's request: on for a crater log with the box ticked, against the "before" time if given.
+function craterParams() {
+  if (!logInfo || !logInfo.crater || !$('crater').checked) return '';
+  const before = $('crater-before').value.trim();
+  return '&crater=1' + (before ? '&before=' + encodeURIComponent(before) : '');
 }
 
 // --- the loop ----------------------------------------------------------------------------------------
@@ -479,7 +486,7 @@ async function tick() {
       if (logWanted !== null && logWanted !== logShown) {
         const want = logWanted;
         await fetchFrame('/api/log/frame?name=' + encodeURIComponent($('log').value) + '&t=' + encodeURIComponent(want) +
-          '&' + frameParams() + (logInfo.crater && $('crater').checked ? '&crater=1' : ''), play !== 0);
+          '&' + frameParams() + craterParams(), play !== 0);
         logShown = want;
       }
     }
@@ -501,6 +508,7 @@ async function init() {
   }));
   $('colour').addEventListener('change', () => { liveDirty = true; logShown = null; });
   $('crater').addEventListener('change', () => { logShown = null; });
+  $('crater-before').addEventListener('change', () => { logShown = null; });
   $('scene').addEventListener('change', () => loadScene().catch((e) => showError(e.message)));
   $('setup').addEventListener('click', setup);
   $('go').addEventListener('click', goPause);
