@@ -447,6 +447,7 @@ std::shared_ptr<const std::string> LiveRuns::frame(const FrameRequest& request) 
                              .dump() +
                          ",\"events_per_second\":" + nlohmann::json(run->events_per_second).dump() +
                          ",\"status\":" + nlohmann::json(run->status).dump() +
+                         ",\"message\":" + nlohmann::json(run->message).dump() +
                          ",\"log\":" + nlohmann::json(fs::path(run->log_path).filename().string()).dump() +
                          segments_field(run->scene);
   }

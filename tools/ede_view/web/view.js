@@ -316,6 +316,7 @@ function monitors(f) {
     ['bed disks displaced', c.displaced + ' of ' + c.bed_disks + (c.detached ? ' (' + c.detached + ' ejecta)' : '')]);
   }
   if (i.status) rows.push(['run', i.status]);
+  if (i.message) rows.push(['message', i.message]);  // e.g. why a reversal could not be placed
   if (i.log) rows.push(['log', i.log]);
   $('monitors').replaceChildren(...rows.map(([k, v]) => {
     const tr = document.createElement('tr');
