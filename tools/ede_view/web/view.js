@@ -7,7 +7,8 @@
 // circle cut in the fragment shader, from the frame's decoded float32 columns), else with the 2D canvas
 // below; the box and wall segments are drawn on a transparent 2D canvas over the WebGL one. The
 // histograms and monitors are redrawn at most 10 times a second while frames stream (they are text and
-// bars nobody reads at 60 Hz, and their layout cost the main thread as much as the disks).
+// bars nobody reads at 60 Hz, and their layout cost the main thread as much as the disks). A crater log
+// gets the crater view: the server's surface profiles and crater metrics drawn over the disks.
 // Rejected: a framework or a plotting library (a build step or a CDN); WebGL only (a browser without it
 // would show nothing: the 2D path stays as the fallback, and ?draw=2d forces it for comparison).
 'use strict';
@@ -197,7 +198,7 @@ function drawDisks(f) {
 }
 
 // The crater view (crater_view.hpp): the bed's surface at the log's start (grey, dashed) and now (yellow),
-// as steps over the profile's bins, and the crater's extent [left, right) marked under the old surface.
+// as steps over the profile's bins, and the crater's extent [left, right) marked above the old surface.
 function drawCrater(ctx, c, scale, ly) {
   const profile = (heights) => {
     ctx.beginPath();
@@ -216,7 +217,7 @@ function drawCrater(ctx, c, scale, ly) {
   ctx.strokeStyle = '#ffd600';
   profile(c.after);
   if (c.has_crater) {
-    const top = Math.max(...c.before) , y = (ly - top) * scale - 8;
+    const top = Math.max(...c.before), y = (ly - top) * scale - 8;
     ctx.strokeStyle = '#ff5252';
     ctx.beginPath();
     ctx.moveTo(c.left * scale, y); ctx.lineTo(c.right * scale, y);
