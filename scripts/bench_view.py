@@ -10,7 +10,8 @@
 2. The same scenes in headless chromium (if installed), once per drawing path (?draw=2d: the 2D canvas's
    pixel path; ?draw=webgl: gl_draw.js; the page's default picks one of them, said in the table): frames
    the page draws per second (fetch, parse, draw, histograms), the median of the rates of each second of
-   the window, and the median time of the page's own drawing code per frame (edeView.drawMs).
+   the window, the median time of the page's own drawing code per frame (edeView.drawMs), and the
+   engine's rate meanwhile (what watching in a browser costs it).
 3. Seeks: a log of --events events at N = 10^4, frames at 50 random times (median and worst, HTTP
    included, each a fresh keyframe seek + replay).
 Prints a markdown table (docs/view.md holds one, measured under load on the project's shared machine).
@@ -61,7 +62,8 @@ def live(server, scene, seconds):
 
 
 def browser_fps(server, scene, seconds, draw):
-    """(median frames/s over 1-s windows, median drawMs, drawer used, renderer) or None without chromium."""
+    """(median frames/s over 1-s windows, median drawMs, drawer used, renderer, the engine's median M events/s
+    meanwhile) or None without chromium."""
     try:
         browser = viewlib.Browser()
     except SystemExit:
@@ -77,7 +79,7 @@ def browser_fps(server, scene, seconds, draw):
         browser.eval("document.getElementById('go').click()")
         wait_running(server)
         time.sleep(1.0)
-        rates, draw_ms = [], []
+        rates, draw_ms, engine = [], [], []
         f0, t0 = browser.eval("edeView.frames"), time.perf_counter()
         end = t0 + seconds
         while time.perf_counter() < end:
@@ -85,11 +87,12 @@ def browser_fps(server, scene, seconds, draw):
             f1, t1 = browser.eval("edeView.frames"), time.perf_counter()
             rates.append((f1 - f0) / (t1 - t0))
             draw_ms.append(browser.eval("edeView.drawMs"))
+            engine.append(server.json("/api/run/status")[1]["events_per_second"] / 1e6)
             f0, t0 = f1, t1
         drawer = browser.eval("edeView.drawer")
         renderer = browser.eval("edeView.renderer")
         browser.eval("document.getElementById('go').click()")
-        return statistics.median(rates), statistics.median(draw_ms), drawer, renderer
+        return statistics.median(rates), statistics.median(draw_ms), drawer, renderer, statistics.median(engine)
     finally:
         browser.close()
 
@@ -151,14 +154,15 @@ def main():
     finally:
         server.close()
     print("| disks | frames/s served (HTTP, back to back) | MB/frame | engine M events/s unwatched | watched |"
-          " page frames/s, 2D path (draw ms) | page frames/s, WebGL (draw ms) | the page's default |")
+          " page frames/s, 2D path (draw ms; engine M events/s meanwhile) | page frames/s, WebGL (the same) |"
+          " the page's default |")
     print("|---:|---:|---:|---:|---:|---:|---:|---|")
     renderer = "-"
     for n, fps, mb, ev0, ev1, pages, default in rows:
         cells = []
         for draw in ("2d", "webgl"):
             p = pages[draw]
-            cells.append("-" if p is None else f"{p[0]:.0f} ({p[1]:.1f}; {p[2]})")
+            cells.append("-" if p is None else f"{p[0]:.0f} ({p[1]:.1f}; {p[2]}; engine {p[4]:.2f})")
             if p is not None and draw == "webgl":
                 renderer = p[3]
         print(f"| {n} | {fps:.0f} | {mb:.2f} | {ev0:.2f} | {ev1:.2f} | {cells[0]} | {cells[1]} | {default} |")
