@@ -50,19 +50,25 @@ class Simulation:
     >>> sim.advance_to(1.0); s = sim.state          # the disks at t = 1
     >>> sim.run(); print(sim.summary["status"]); sim.close()
 
+    finish() ends a run early with a complete log (ede.open reads it as finished, verify() re-runs it to
+    that time); with impulses=True, impulses() gives running sums of the impulses on the walls and the
+    pair virial, whose differences between two times are the pressure over that window (ede.pressure's).
+
     Pausing never changes what happens: the events (and the log) are the same bit for bit whatever the
     slices. Ctrl-C during run() or advance_to() stops the run at its next check and raises
     KeyboardInterrupt; the log keeps every complete record (close() it, or go on running).
     """
 
-    def __init__(self, scene, log=None, set=None, *, _resume=None):
+    def __init__(self, scene, log=None, set=None, *, impulses=False, _resume=None):
+        self._impulses = bool(impulses)
         if _resume is not None:
             self._sim = _ede.Simulation(os.fspath(_resume))
             return
         if log is not None and not isinstance(log, (str, os.PathLike)):
             raise TypeError("log: expected a path or None, got %s" % type(log).__name__)
         text, is_file, name = _scene_source(scene)
-        self._sim = _ede.Simulation(text, is_file, name, _overrides(set), os.fspath(log) if log else "")
+        self._sim = _ede.Simulation(text, is_file, name, _overrides(set), os.fspath(log) if log else "",
+                                    self._impulses)
 
     def run(self, max_events=None, progress=False):
         """Runs to the scene's stop condition (or `max_events` more events); returns the status."""
@@ -115,6 +121,24 @@ class Simulation:
 
     def write_state_csv(self, path):
         self._sim.write_state_csv(os.fspath(path))
+
+    def finish(self):
+        """Ends the run here, as if a stop condition held now: the events still due at exactly this time are
+        processed, then the log is closed complete at this time (every tool reads it as a finished run,
+        Log.verify() re-runs it to this time, its end state is this state). The log cannot be resumed
+        afterwards (close() keeps an unfinished run resumable instead). Then as close(). Idempotent."""
+        self._sim.finish()
+
+    def impulses(self):
+        """The running sums since the run began (Simulation(..., impulses=True)): a dict with time, wall
+        (sum of |dp_n| per wall: left, right, bottom, top, a numpy array), virial (W = sum of r_ij . dp_i
+        over pair collisions), pair_collisions and wall_collisions. The pressure over (t0, t1] comes from
+        two of them, d = at t1 - at t0 (as ede.pressure and ede-stats pressure compute it):
+        walls P = d wall.sum() / (2 (Lx + Ly) (t1 - t0)); virial P = (N kT + d virial / (2 (t1 - t0))) / A."""
+        if not self._impulses:
+            raise ValueError("impulses(): this Simulation keeps no impulse sums; make it with "
+                             "ede.Simulation(scene, ..., impulses=True)")
+        return self._sim.impulses()
 
     def close(self):
         """Closes the log (a finished run's log gets its index). Idempotent."""

@@ -4,7 +4,9 @@
 // check, and is raised once run() has returned, so the log keeps every complete record and the run can
 // be continued or closed. Scenes arrive as TOML text or a file name: the Python layer turns a dict into
 // TOML (python/ede/_toml.py), so every scene goes through the one loader and its messages.
-// Rejected: checking signals from a second thread (timing-dependent) and running with the GIL held
+// finish() and impulses() are Simulation::finish (the log complete where the run is) and
+// Simulation::impulses (running sums of wall impulses and the pair virial, kept when the Simulation was
+// made with impulses=True). Rejected: checking signals from a second thread (timing-dependent) and running with the GIL held
 // (Ctrl-C would wait for the end of the run, and no other thread could run meanwhile).
 #include <memory>
 
@@ -26,8 +28,8 @@ struct ProgressHook {
 class PySimulation {
  public:
   PySimulation(const std::string& scene, bool is_file, const std::string& source_name,
-               const std::vector<std::string>& overrides, const std::string& log_path)
-      : hook_(std::make_shared<ProgressHook>()) {
+               const std::vector<std::string>& overrides, const std::string& log_path, bool impulses)
+      : hook_(std::make_shared<ProgressHook>()), impulses_(impulses) {
     std::vector<Override> set;
     for (const std::string& o : overrides) set.push_back(Override{o});
     Result<Scene> loaded = is_file ? load_scene_file(scene, set) : parse_scene_text(scene, source_name, set);
@@ -74,6 +76,21 @@ class PySimulation {
   std::string message() const { return sim_->message(); }
   std::string scene_text() const { return sim_->scene().source_text; }
   void write_state_csv(const std::string& path) const { value_or_raise(sim_->write_state_csv(path)); }
+  // Simulation::finish: the log closed complete at the current time (not resumable).
+  void finish() {
+    Status s = [&] {
+      py::gil_scoped_release release;
+      return sim_->finish();
+    }();
+    value_or_raise(std::move(s));
+  }
+  py::dict impulses() const {
+    const ImpulseSums p = sim_->impulses();
+    py::dict d;
+    d["time"] = p.time, d["wall"] = take_vector(std::vector<double>(p.wall.begin(), p.wall.end()));
+    d["virial"] = p.virial, d["pair_collisions"] = p.pair_collisions, d["wall_collisions"] = p.wall_collisions;
+    return d;
+  }
   void close() {
     Status s = [&] {
       py::gil_scoped_release release;
@@ -120,6 +137,7 @@ class PySimulation {
   void start(const Scene& scene, const std::string& log_path) {
     SimulationOptions o = options();
     o.log_path = log_path;
+    o.impulses = impulses_;
     adopt(released([&] { return Simulation::create(scene, o); }));
   }
 
@@ -138,6 +156,7 @@ class PySimulation {
   }
 
   std::shared_ptr<ProgressHook> hook_;
+  bool impulses_ = false;  // SimulationOptions::impulses
   std::unique_ptr<Simulation> sim_;
 };
 
@@ -146,8 +165,9 @@ class PySimulation {
 void bind_run(py::module_& m) {
   py::class_<PySimulation>(m, "Simulation")
       .def(py::init<const std::string&, bool, const std::string&, const std::vector<std::string>&,
-                    const std::string&>(),
-           py::arg("scene"), py::arg("is_file"), py::arg("source_name"), py::arg("overrides"), py::arg("log_path"))
+                    const std::string&, bool>(),
+           py::arg("scene"), py::arg("is_file"), py::arg("source_name"), py::arg("overrides"), py::arg("log_path"),
+           py::arg("impulses") = false)
       .def(py::init<const std::string&>(), py::arg("resume_path"))
       .def("run", &PySimulation::run, py::arg("max_events"), py::arg("callback"))
       .def("advance_to", &PySimulation::advance_to, py::arg("t"), py::arg("callback"))
@@ -162,6 +182,8 @@ void bind_run(py::module_& m) {
       .def("message", &PySimulation::message)
       .def("scene_text", &PySimulation::scene_text)
       .def("write_state_csv", &PySimulation::write_state_csv)
+      .def("finish", &PySimulation::finish)
+      .def("impulses", &PySimulation::impulses)
       .def("close", &PySimulation::close)
       .def("log_kept", &PySimulation::log_kept);
   m.def("check_scene",

@@ -1,14 +1,24 @@
 // One frame of the view: a State packed for the page as one binary response, a small JSON header with
-// the monitors and histograms, then float32 columns the page hands straight to its canvas drawing.
+// the monitors and histograms, then the columns the page draws, in one of two packings:
 //
-//   "EDEF" | u32 json_bytes | JSON (padded with spaces to 4 bytes) | u32 n | f32 x[n] y[n] r[n] speed[n]
-//   species[n] displacement[n]        (little-endian, as every machine ede-view runs on)
+//   "EDEF" | u32 json_bytes | JSON (spaces to a multiple of 8 bytes from the start) | u32 n | u32 0 |
+//   the columns JSON "columns" lists, in its order, each padded to 8 bytes  (little-endian, as every
+//   machine ede-view runs on)
 //
+// - compact (the default; 5 bytes a disk, 7 with mixed radii): x and y as u16 fixed point over the box
+//   (q = round(65535 x / lx): 1/65535 of the box, a hundredth of a pixel on the page), the radius as u16
+//   of the largest radius only when the disks' radii differ (else one number in the JSON), and one u8 per
+//   disk for the colouring the page asked for (?colour=): the speed class (0 slow, 1 medium, 2 fast), the
+//   species index (mod 256), or the displacement in 255ths of the largest one sent.
+// - exact (?exact=1): x, y and radius as float64, exactly the State's numbers (float and double runs;
+//   long double runs rounded to double), and the same colour byte: what the tests compare with
+//   `ede-replay --at`.
 // Above `max_disks` only every k-th disk is sent (k = ceil(N / max_disks), said in the JSON as "stride"),
-// while the monitors and histograms are computed over every disk. Rejected: JSON per disk (10^5 disks
-// would be ~6 MB of text per frame and the browser's parse alone would take longer than a frame), and
-// WebSockets (cpp-httplib has none; a fetch per frame paced by the page is as fast on localhost and lets
-// any number of tabs watch without the server tracking them).
+// while the monitors and histograms are computed over every disk. Rejected: float32 columns of x, y, r,
+// speed, species and displacement for every colouring (24 bytes a disk: the server's packing and copying
+// of 2.4 MB frames bounded 10^5 disks at ~10 frames/s), JSON per disk (10^5 disks would be ~6 MB of text
+// per frame), and WebSockets (cpp-httplib has none; a fetch per frame paced by the page is as fast on
+// localhost and lets any number of tabs watch without the server tracking them).
 #pragma once
 
 #include <cstdint>
@@ -33,7 +43,33 @@ struct FrameExtras {
   double collisions = 0;    // pair collisions up to this state (for collisions per disk)
 };
 
-std::string pack_frame(const State& s, const Reference& ref, const FrameExtras& extras, std::size_t max_disks);
+enum class Colouring : std::uint8_t { Speed, Species, Displacement };
+
+// What the page asks for (?max=, ?exact=, ?colour=).
+struct FrameRequest {
+  std::size_t max_disks = 200000;
+  bool exact = false;
+  Colouring colour = Colouring::Speed;
+  bool operator==(const FrameRequest&) const = default;
+};
+// The request's packing from its query values ("speed", "species", "displacement"; "0"/"1"), or the
+// message naming the bad value.
+Result<FrameRequest> frame_request(std::size_t max_disks, const std::string& exact, const std::string& colour);
+
+// The monitors and histograms over every disk (the frame's costly part: several passes and copies of
+// every velocity), as JSON fields, with the speed the classes are measured against.
+struct FrameStatistics {
+  std::string json_fields;     // "\"kT\":...,\"speed_hist\":{...},..." without braces
+  double time = 0;             // of the state they were computed from ("statistics_time" in the JSON)
+  double reference_speed = 0;  // the initial mean speed (the current one when that is 0)
+};
+FrameStatistics frame_statistics(const State& s, const Reference& ref);
+
+// A frame of `s` with statistics computed from it, or given (a live run reuses those of a state a few
+// milliseconds older at large N: live_run.hpp).
+std::string pack_frame(const State& s, const Reference& ref, const FrameExtras& extras, const FrameRequest& request);
+std::string pack_frame(const State& s, const Reference& ref, const FrameExtras& extras, const FrameRequest& request,
+                       const FrameStatistics& statistics);
 
 // ,"segments":[[ax,ay,bx,by],...] for FrameExtras::json_fields: the scene's wall segments, which the page
 // draws over the disks ("" when the scene has none, so other frames keep their bytes).

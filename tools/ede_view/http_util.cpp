@@ -37,6 +37,28 @@ std::optional<double> number_param(const httplib::Request& req, httplib::Respons
   return v;
 }
 
+std::optional<FrameRequest> frame_request_param(const httplib::Request& req, httplib::Response& res,
+                                                std::size_t default_max) {
+  const auto max = number_param(req, res, "max", double(default_max));
+  if (!max) return std::nullopt;
+  auto r = frame_request(*max >= 1 && *max < 4e9 ? std::size_t(*max) : default_max, req.get_param_value("exact"),
+                         req.get_param_value("colour"));
+  if (!r) {
+    send_error(res, 400, r.error().message);
+    return std::nullopt;
+  }
+  return r.value();
+}
+
+void send_frame(httplib::Response& res, std::shared_ptr<const std::string> frame) {
+  res.set_header("Cache-Control", "no-store");
+  const std::size_t size = frame->size();
+  res.set_content_provider(size, "application/octet-stream",
+                           [frame = std::move(frame)](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+                             return sink.write(frame->data() + offset, length);
+                           });
+}
+
 namespace {
 
 bool inside(const fs::path& path, const fs::path& root) {

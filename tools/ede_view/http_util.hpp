@@ -10,9 +10,12 @@
 
 #include <filesystem>
 #include <httplib.h>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "frame.hpp"
 
 namespace ede::view {
 
@@ -23,6 +26,12 @@ void send_json(httplib::Response& res, const std::string& json);
 // A query parameter as a finite double; nothing and an error sent when missing (unless `fallback`) or bad.
 std::optional<double> number_param(const httplib::Request& req, httplib::Response& res, const std::string& name,
                                    std::optional<double> fallback = std::nullopt);
+
+// A frame's packing from ?max= (default `default_max`), ?exact= and ?colour=; nothing and a 400 sent when bad.
+std::optional<FrameRequest> frame_request_param(const httplib::Request& req, httplib::Response& res,
+                                                std::size_t default_max);
+// A packed frame as the response's body, sent from the shared buffer (not copied: frames are megabytes).
+void send_frame(httplib::Response& res, std::shared_ptr<const std::string> frame);
 
 // A folder ede-view may read from, by its canonical path.
 struct Root {

@@ -86,12 +86,11 @@ void add_live_routes(httplib::Server& server, const std::vector<Root>& roots, Li
     send_json(res, runs.status_json());
   });
   server.Get("/api/run/frame", [&runs](const httplib::Request& req, httplib::Response& res) {
-    const auto max = number_param(req, res, "max", 200000);
-    if (!max) return;
-    auto frame = runs.frame(*max >= 1 ? std::size_t(*max) : 200000);
+    const auto request = frame_request_param(req, res, 200000);
+    if (!request) return;
+    auto frame = runs.frame(*request);
     if (!frame) return send_error(res, 404, "no run: press SETUP first");
-    res.set_header("Cache-Control", "no-store");
-    res.set_content(std::move(*frame), "application/octet-stream");
+    send_frame(res, std::move(frame));
   });
 }
 

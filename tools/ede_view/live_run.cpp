@@ -19,7 +19,8 @@ struct LiveRuns::Run {
   Scene scene;
   LiveSetup setup;
   std::string log_path;
-  std::vector<double> reversals;
+  std::vector<double> reversals;              // the times reverse was pressed at
+  std::vector<std::uint64_t> reversal_pairs;  // ... and the pair collisions they followed (by collisions)
 
   std::mutex sim_m;
   std::unique_ptr<Simulation> sim;
@@ -42,8 +43,14 @@ struct LiveRuns::Run {
   // than the worker publishes) asking again get these bytes instead of the statistics over every disk again.
   std::mutex frame_m;
   std::shared_ptr<const State> framed_state;
-  std::string framed_extras, framed;
-  std::size_t framed_max = 0;
+  std::string framed_extras;
+  std::shared_ptr<const std::string> framed;
+  FrameRequest framed_request;
+  // The statistics of the last frame packed, reused for newer states of a large running run (below).
+  FrameStatistics statistics;
+  std::shared_ptr<const State> statistics_state;
+  Clock::time_point statistics_wall{};
+  double statistics_seconds = 0;  // what computing them took
 };
 
 namespace {
@@ -54,6 +61,8 @@ SimulationOptions log_options(const std::string& path) {
   o.impulses = true;  // the page's pressure monitor
   return o;
 }
+
+constexpr std::size_t kFreshStatisticsDisks = 20000;
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
@@ -72,19 +81,45 @@ std::vector<Override> live_overrides(const Scene& base, const LiveSetup& setup) 
   // A run stopped by a new SETUP or by the server's end keeps its complete chunks only: small chunks lose
   // at most 1024 events (the log's bytes per event barely change).
   if (!base.log.chunk_events) o.push_back({"log.chunk_events=1024"});
-  if (base.stop.collisions_per_particle) o.push_back({"stop.collisions_per_particle=1e15"});
+  // Lifted far past any live run, yet within what the run checks allow with samples by collisions per
+  // disk (1e8 samples: 1e15 with samples every 5 collisions per disk was refused as endless sampling).
+  if (base.stop.collisions_per_particle)
+    o.push_back({"stop.collisions_per_particle=" +
+                 text_of(base.sample_collisions ? std::min(1e15, 1e8 * *base.sample_collisions) : 1e15)});
   if (base.stop.events) o.push_back({"stop.events=1000000000000000000"});
   return o;
 }
 
-// actions = the scene's own plus a reversal at each time in `reversals`, in time order.
-Override actions_override(const Scene& scene, const std::vector<double>& reversals) {
-  std::vector<double> times = reversals;
-  for (const ActionSpec& a : scene.actions) times.push_back(a.time);
-  std::sort(times.begin(), times.end());
+// The scene's actions are scheduled by collisions per disk (the loader refuses a mix with time actions).
+bool actions_by_collisions(const Scene& scene) {
+  return !scene.actions.empty() && scene.actions.front().collisions_per_disk.has_value();
+}
+
+// The collisions per disk c whose action fires right after pair collision number `pairs` of a run of n
+// disks: the engine fires it at the first P >= ceil(c n / 2) (computed in double), so c is moved by
+// one double at a time until that is exactly `pairs` (2 pairs / n alone can round either way).
+double collisions_per_disk_for(std::uint64_t pairs, std::size_t n) {
+  const auto target = [n](double c) { return std::uint64_t(std::ceil(c * double(n) / 2)); };
+  double c = 2.0 * double(pairs) / double(n);
+  while (target(c) > pairs) c = std::nextafter(c, 0.0);
+  while (target(c) < pairs) c = std::nextafter(c, HUGE_VAL);
+  return c;
+}
+
+// actions = the scene's own plus the reversals asked for, in one schedule: by time (a reversal at each
+// time in `times`) when the scene's actions are by time or it has none, else by collisions per disk (a
+// reversal right after each pair collision number in `pairs`, of a run of n disks).
+Override actions_override(const Scene& scene, const std::vector<double>& times, const std::vector<std::uint64_t>& pairs,
+                          std::size_t n) {
+  const bool by_collisions = actions_by_collisions(scene);
+  std::vector<double> when = by_collisions ? std::vector<double>() : times;
+  for (std::uint64_t p : pairs) when.push_back(collisions_per_disk_for(p, n));
+  for (const ActionSpec& a : scene.actions) when.push_back(a.collisions_per_disk.value_or(a.time));
+  std::sort(when.begin(), when.end());
+  const std::string key = by_collisions ? "{collisions_per_disk=" : "{time=";
   std::string text = "actions=[";
-  for (std::size_t k = 0; k < times.size(); ++k)
-    text += (k ? "," : "") + std::string("{time=") + text_of(times[k]) + ",kind=\"reverse_velocities\"}";
+  for (std::size_t k = 0; k < when.size(); ++k)
+    text += (k ? "," : "") + key + text_of(when[k]) + ",kind=\"reverse_velocities\"}";
   return {text + "]"};
 }
 
@@ -103,24 +138,49 @@ void publish(LiveRuns::Run& r, Simulation& sim, double events_per_second) {
   r.events_per_second = events_per_second;
 }
 
-// Makes the run again with a reversal at its current time and replays it there (live_run.hpp).
+// Why a reversal cannot be scheduled now, or "": an action needs a time > 0, or, in a scene whose actions
+// are by collisions per disk, a pair collision to follow.
+std::string cannot_reverse(const Scene& scene, double time, std::uint64_t pairs) {
+  if (actions_by_collisions(scene) && pairs == 0)
+    return "this scene schedules its actions by collisions per disk, so a reversal is one too (right after the "
+           "latest pair collision): there has been none yet. Fix: press GO, then reverse";
+  if (!actions_by_collisions(scene) && !(time > 0))
+    return "a reversal is an action at the current time, which must be after t = 0. Fix: press GO, then reverse";
+  return "";
+}
+
+// Makes the run again with a reversal at its current time (by collisions per disk: right after its latest
+// pair collision) and replays it there (live_run.hpp). The new scene is loaded before the run is
+// replaced, so a reversal that cannot be made leaves the run as it was, with the reason in its message.
 void do_reverse(LiveRuns::Run& r) {
   const double t_r = double(r.sim->time());
-  r.reversals.push_back(t_r);
+  const EventCounts before = r.sim->counts();
+  const std::uint64_t pairs = before.of(EventKind::Pair);
+  std::vector<double> times = r.reversals;
+  std::vector<std::uint64_t> pair_list = r.reversal_pairs;
+  times.push_back(t_r);
+  if (actions_by_collisions(r.scene)) pair_list.push_back(pairs);
+  std::vector<Override> o = live_overrides(r.scene, r.setup);
+  o.push_back(actions_override(r.scene, actions_by_collisions(r.scene) ? std::vector<double>() : times, pair_list,
+                               r.reference.x0.size()));
+  std::string error = cannot_reverse(r.scene, t_r, pairs);
+  Result<Scene> scene = error.empty() ? load_scene_file(r.setup.scene_path, o) : Result<Scene>(Error{error});
+  if (!scene) {
+    std::lock_guard lock(r.m);
+    r.message = "reverse time: " + scene.error().message;
+    return;
+  }
   {
     std::lock_guard lock(r.m);
     r.catching_up = true;
     r.status = "reversing: replaying to t = " + text_of(t_r);
+    r.message.clear();
   }
-  std::vector<Override> o = live_overrides(r.scene, r.setup);
-  o.push_back(actions_override(r.scene, r.reversals));
-  std::string error;
   {
     std::lock_guard lock(r.sim_m);
     (void)r.sim->close();  // the new run rewrites the same log from the start
     r.sim.reset();
-    auto scene = load_scene_file(r.setup.scene_path, o);
-    auto sim = scene ? Simulation::create(scene.value(), log_options(r.log_path)) : Result<Simulation>(scene.error());
+    auto sim = Simulation::create(scene.value(), log_options(r.log_path));
     if (sim)
       r.sim = std::make_unique<Simulation>(std::move(sim).value());
     else
@@ -129,9 +189,15 @@ void do_reverse(LiveRuns::Run& r) {
   if (r.sim) {
     auto reached = r.sim->advance_to(t_r);
     if (!reached) error = reached.error().message;
+    // The replay is the same run with one more action: every action so far, and this one, happened.
+    else if (r.sim->counts().of(EventKind::Action) != before.of(EventKind::Action) + 1)
+      error = "the replayed run holds " + std::to_string(r.sim->counts().of(EventKind::Action)) +
+              " actions at t = " + text_of(t_r) + ", not " + std::to_string(before.of(EventKind::Action) + 1);
   }
   std::lock_guard lock(r.m);
   r.catching_up = false;
+  r.reversals = times;
+  r.reversal_pairs = pair_list;
   if (!error.empty() || !r.sim) {
     r.running = false;
     r.ended = true;
@@ -340,6 +406,12 @@ Status LiveRuns::reverse() {
   {
     std::lock_guard run_lock(run_->m);
     if (run_->ended) return Error{"the run has ended: press SETUP for a new one"};
+    // Paused, the published state is the run's own: say at once why it cannot be reversed (a running
+    // run is checked by its worker, which then leaves the reason in the status's message).
+    if (const std::string why = cannot_reverse(run_->scene, run_->state ? double(run_->state->time) : 0.0,
+                                               run_->collisions);
+        !run_->running && !why.empty())
+      return Error{"reverse time: " + why};
     run_->reverse_requested = true;
   }
   run_->cv.notify_all();
@@ -353,18 +425,20 @@ void LiveRuns::set_pace(double pace) {
   run_->pace = pace;
 }
 
-std::optional<std::string> LiveRuns::frame(std::size_t max_disks) {
+std::shared_ptr<const std::string> LiveRuns::frame(const FrameRequest& request) {
   std::shared_ptr<Run> run;
   {
     std::lock_guard lock(mutex_);
     run = run_;
   }
-  if (!run) return std::nullopt;
+  if (!run) return nullptr;
   std::shared_ptr<const State> state;
   FrameExtras extras;
+  bool running = false;
   {
     std::lock_guard lock(run->m);
     state = run->state;
+    running = run->running && !run->catching_up;
     extras.collisions = double(run->collisions);
     const ImpulseSums& p = run->impulses;
     extras.json_fields = "\"impulses\":" +
@@ -373,16 +447,30 @@ std::optional<std::string> LiveRuns::frame(std::size_t max_disks) {
                              .dump() +
                          ",\"events_per_second\":" + nlohmann::json(run->events_per_second).dump() +
                          ",\"status\":" + nlohmann::json(run->status).dump() +
+                         ",\"message\":" + nlohmann::json(run->message).dump() +
                          ",\"log\":" + nlohmann::json(fs::path(run->log_path).filename().string()).dump() +
                          segments_field(run->scene);
   }
   run->wanted = true;
-  if (!state) return std::nullopt;
+  if (!state) return nullptr;
   std::lock_guard lock(run->frame_m);
-  if (state != run->framed_state || max_disks != run->framed_max || extras.json_fields != run->framed_extras) {
-    run->framed = pack_frame(*state, run->reference, extras, max_disks);
+  if (state != run->framed_state || !(request == run->framed_request) || extras.json_fields != run->framed_extras) {
+    // The statistics pass over every disk: for every frame up to 20 000 disks and of a run that is not
+    // running (a paused or ended run's frame is exact), else at most every 0.1 s of wall time (the page
+    // redraws its histograms and monitors at most 10 times a second anyway) and at most 10 % of the time
+    // (the pass takes ~30 ms at 10^5 disks, ~0.3 s at 10^6 on a loaded machine: then every 0.3 s, 3 s).
+    const bool fresh = state->size() <= kFreshStatisticsDisks || !running || !run->statistics_state ||
+                       seconds_since(run->statistics_wall) >= std::max(0.1, 10 * run->statistics_seconds);
+    if (state != run->statistics_state && fresh) {
+      const Clock::time_point t0 = Clock::now();
+      run->statistics = frame_statistics(*state, run->reference);
+      run->statistics_state = state;
+      run->statistics_wall = Clock::now();
+      run->statistics_seconds = seconds_since(t0);
+    }
+    run->framed = std::make_shared<const std::string>(pack_frame(*state, run->reference, extras, request, run->statistics));
     run->framed_state = state;
-    run->framed_max = max_disks;
+    run->framed_request = request;
     run->framed_extras = extras.json_fields;
   }
   return run->framed;
@@ -406,6 +494,7 @@ std::string LiveRuns::status_json() {
                         {"events_per_second", run->events_per_second},
                         {"pace", run->pace},
                         {"reversals", run->reversals},
+                        {"reversal_pairs", run->reversal_pairs},
                         {"message", run->message}}
       .dump();
 }

@@ -10,7 +10,9 @@
 // Frames carry the run's impulse sums (Simulation::impulses) for the page's pressure monitor.
 // "Reverse time" (GasLab's button) is a scheduled reverse_velocities action at the current time: the run
 // is made again from its scene with that action added and replayed to it at full speed, so the one log
-// holds the whole story, reversal included, and `ede-replay verify` still holds. Rejected: a new run
+// holds the whole story, reversal included, and `ede-replay verify` still holds. The reversal joins the
+// scene's own schedule: by time, or, when the scene's actions are by collisions per disk (a scene cannot
+// mix both), right after the latest pair collision before the press. Rejected: a new run
 // started from the reversed current state (a second log, and a setup check that would refuse disks
 // touching at that instant) and a reversal hook inside the engine (the library's API has none, and the
 // engine's determinism rests on actions being part of the scene).
@@ -50,8 +52,8 @@ class LiveRuns {
   Status reverse();
   Status finish();  // ends the run here: its log complete at the current time (Simulation::finish)
   void set_pace(double sim_time_per_second);  // 0: as fast as the engine goes
-  // The latest published state as a frame (frame.hpp); nothing before the first SETUP.
-  std::optional<std::string> frame(std::size_t max_disks);
+  // The latest published state as a frame (frame.hpp); null before the first SETUP.
+  std::shared_ptr<const std::string> frame(const FrameRequest& request);
   std::string status_json();
 
   struct Run;  // the worker's state (live_run.cpp)

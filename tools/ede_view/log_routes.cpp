@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "ede/ede.hpp"
+#include "crater_view.hpp"
 #include "frame.hpp"
 
 namespace ede::view {
@@ -25,6 +26,9 @@ struct OpenLog {
   std::optional<Reference> reference;
   std::optional<double> pair_share;
   std::optional<std::string> segments;  // segments_field of the log's scene
+  std::optional<std::optional<CraterBase>> crater;  // crater_base of the log, once looked for
+  std::string crater_before_text;                   // the last ?before= asked for, and its base
+  std::optional<CraterBase> crater_before;
   std::uint64_t last_use = 0;
 };
 
@@ -58,6 +62,12 @@ class LogStore {
   std::uint64_t clock_ = 0;
   std::map<std::string, std::shared_ptr<OpenLog>> logs_;
 };
+
+// The log's crater base (crater_view.hpp), looked for once; the caller holds the entry's mutex.
+const std::optional<CraterBase>& crater_of(OpenLog& entry) {
+  if (!entry.crater) entry.crater = crater_base(*entry.log);
+  return *entry.crater;
+}
 
 nlohmann::json info_json(const std::string& name, const LogInfo& info) {
   return {{"name", name},
@@ -108,13 +118,15 @@ void add_log_routes(httplib::Server& server, const std::vector<Root>& roots) {
     auto entry = find_log(roots, *store, req, res);
     if (!entry) return;
     std::lock_guard lock(entry->mutex);
-    send_json(res, info_json(req.get_param_value("name"), entry->log->info()).dump());
+    std::string json = info_json(req.get_param_value("name"), entry->log->info()).dump();
+    json.pop_back();
+    send_json(res, json + crater_info_field(crater_of(*entry)) + "}");
   });
   server.Get("/api/log/frame", [roots, store](const httplib::Request& req, httplib::Response& res) {
     auto entry = find_log(roots, *store, req, res);
     if (!entry) return;
-    const auto max_disks = number_param(req, res, "max", double(kDefaultMaxDisks));
-    if (!max_disks) return;
+    const auto request = frame_request_param(req, res, kDefaultMaxDisks);
+    if (!request) return;
     if (!req.has_param("t")) return send_error(res, 400, "missing parameter 't' (a time, or 'end')");
     std::lock_guard lock(entry->mutex);
     const Log& log = *entry->log;
@@ -148,9 +160,26 @@ void add_log_routes(httplib::Server& server, const std::vector<Root>& roots) {
       entry->segments = scene ? segments_field(scene.value()) : std::string();
     }
     extras.json_fields = "\"t_request\":" + nlohmann::json(t_text).dump() + *entry->segments;
-    std::size_t max = *max_disks >= 1 ? std::size_t(*max_disks) : kDefaultMaxDisks;
-    res.set_header("Cache-Control", "no-store");
-    res.set_content(pack_frame(s, *entry->reference, extras, max), "application/octet-stream");
+    const std::string crater = req.get_param_value("crater");
+    if (!(crater.empty() || crater == "0" || crater == "1"))
+      return send_error(res, 400, "parameter 'crater' must be 1 or 0, not '" + crater.substr(0, 40) + "'");
+    if (crater == "1" && crater_of(*entry)) {
+      const std::string before = req.get_param_value("before");
+      if (before.empty()) {
+        extras.json_fields += crater_field(*crater_of(*entry), s);
+      } else {
+        if (!entry->crater_before || before != entry->crater_before_text) {
+          auto tb = parse_exact(before, log.info().scalar);
+          if (!tb) return send_error(res, 400, "parameter 'before': " + tb.error().message);
+          auto base = with_before(*crater_of(*entry), log, tb.value());
+          if (!base) return send_error(res, 400, "parameter 'before': " + base.error().message);
+          entry->crater_before = std::move(base).value();
+          entry->crater_before_text = before;
+        }
+        extras.json_fields += crater_field(*entry->crater_before, s);
+      }
+    }
+    send_frame(res, std::make_shared<const std::string>(pack_frame(s, *entry->reference, extras, *request)));
   });
 }
 

@@ -12,7 +12,6 @@ the test asks < 0.15 after 20 collisions per disk, and > 0.8 at the start (every
 """
 import math
 import os
-import struct
 import sys
 import time
 
@@ -29,10 +28,6 @@ def tv_distance(info):
     cdf = lambda v: 1 - math.exp(-m * v * v / (2 * kT))  # noqa: E731
     inside = sum(abs(c / n - (cdf((k + 1) * width) - cdf(k * width))) for k, c in enumerate(counts))
     return 0.5 * (inside + abs(h["outside"] / n - (1 - cdf(h["hi"]))))
-
-
-def f32(text):
-    return struct.unpack("<f", struct.pack("<f", float(text)))[0]
 
 
 def main():
@@ -82,24 +77,54 @@ def main():
         time.sleep(0.4)
         check(browser.screenshot("#disks") == p1, "PAUSE stops the disks: two screenshots are the same")
 
-        # Scrubbing a log: the exact state of ede-replay --at, at times between keyframes.
+        # Scrubbing a log: the exact state of ede-replay --at, at times between keyframes (exact frames,
+        # float64, as the page asks for them with edeView.exact or ?exact=1), and the compact frames the
+        # page asks for by default within half a 16-bit step of it.
         end = browser.eval("(async () => (await (await fetch('/api/log/info?name=0:gas.ede')).json()).end)()")
+        browser.eval("edeView.exact = true")
         for t in ["0.5", repr(end * 0.731), "0"]:
             browser.eval(f"edeView.openLog('0:gas.ede', '{t}')")
             browser.wait(f"edeView.last && edeView.last.t_request === '{t}'", 20)
             drawn = browser.eval("edeView.drawn()")
             rows = replay_at(log, t)
-            same = len(rows) == drawn["n"] and all(
-                f32(row["x"]) == drawn["x"][i] and f32(row["y"]) == drawn["y"][i] for i, row in enumerate(rows))
-            check(same, f"the page drew at t = {t} exactly the positions of ede-replay --at {t} ({len(rows)} disks)")
-        if shots:  # the crater view: a crater log coloured by displacement
-            make_log(os.path.join(server.logs, "crater.ede"), "examples/crater.toml")
-            browser.eval("document.getElementById('colour').value = 'displacement';"
-                         "document.getElementById('colour').dispatchEvent(new Event('change'))")
-            browser.eval("edeView.openLog('0:crater.ede', 'end')")
-            browser.wait("edeView.last.t_request === 'end'", 20)
-            time.sleep(0.3)
+            same = drawn["packing"] == "exact" and len(rows) == drawn["n"] and all(
+                float(row["x"]) == drawn["x"][i] and float(row["y"]) == drawn["y"][i] for i, row in enumerate(rows))
+            check(same, f"the page drew at t = {t} exactly the positions of ede-replay --at {t} ({len(rows)} disks, float64)")
+        browser.eval("edeView.exact = false")
+        t = repr(end * 0.4)
+        browser.eval(f"edeView.openLog('0:gas.ede', '{t}')")
+        browser.wait(f"edeView.last && edeView.last.t_request === '{t}'", 20)
+        drawn, rows = browser.eval("edeView.drawn()"), replay_at(log, t)
+        half = 0.5 * drawn["info"]["lx"] / 65535 * 1.0001 + 1e-7  # + the float32 the page draws
+        err = max(max(abs(float(row["x"]) - drawn["x"][i]), abs(float(row["y"]) - drawn["y"][i])) for i, row in enumerate(rows))
+        check(drawn["packing"] == "compact" and err <= half,
+              f"compact frames (the default): the page drew within {err:.1e} <= {half:.1e} of ede-replay --at {t}")
+        # The crater view: a crater log opens coloured by displacement, with its surface profiles drawn and
+        # the crater's metrics in the monitors (their numbers: test_view_crater.py).
+        make_log(os.path.join(server.logs, "crater.ede"), "examples/crater.toml")
+        browser.eval("edeView.openLog('0:crater.ede', 'end')")
+        browser.wait("edeView.last.t_request === 'end' && edeView.last.info.crater", 20)
+        time.sleep(0.3)
+        monitors = browser.eval("document.getElementById('monitors').textContent")
+        colour = browser.eval("document.getElementById('colour').value")
+        depth = browser.eval("edeView.last.info.crater.depth")
+        check("crater depth" in monitors and "bed disks displaced" in monitors and colour == "displacement" and depth > 0.1,
+              f"a crater log opens in the crater view (depth {depth:.3f} in the monitors, coloured by {colour})")
+        if shots:
             open(os.path.join(shots, "view-log.png"), "wb").write(browser.screenshot())
+        # Playing the log backward from its end, then forward, at a chosen speed (simulated time per second).
+        end = browser.eval("edeView.last.time")
+        browser.eval(f"document.getElementById('play-speed').value = '{end / 4!r}'; document.getElementById('back').click()")
+        browser.wait(f"edeView.last.time < {end * 0.9!r}", 20)
+        t1 = browser.eval("edeView.last.time")
+        time.sleep(0.5)
+        t2 = browser.eval("edeView.last.time")
+        browser.eval("document.getElementById('stop').click(); document.getElementById('fwd').click()")
+        time.sleep(0.8)
+        t3 = browser.eval("edeView.last.time")
+        browser.eval("document.getElementById('stop').click()")
+        check(end > t1 > t2 and t3 > t2, f"play back from the end goes back in time ({end:.3f} > {t1:.3f} > {t2:.3f}),"
+              f" play forward forward ({t3:.3f})")
 
         # The WebGL disk layer (forced: the page prefers its 2D pixels where WebGL is software, as here):
         # it draws the disks (lit pixels about the disks' area) and they move.

@@ -4,6 +4,7 @@ requests get clean JSON errors with a 4xx status: path traversal, absolute paths
 unknown logs, bad numbers, oversized bodies and URIs, a foreign Host header, malformed JSON.
 """
 import json
+import math
 import os
 import struct
 import subprocess
@@ -16,21 +17,25 @@ from viewlib import Server, check, make_log, replay_at, tools_dir  # noqa: E402
 
 
 def parse_frame(raw):
+    """(JSON header, {column name: tuple of values}) of a frame (tools/ede_view/frame.hpp); compact
+    positions and radii are decoded to the box's units (q * scale), exact ones are the float64 sent."""
     assert raw[:4] == b"EDEF"
     (jlen,) = struct.unpack_from("<I", raw, 4)
     info = json.loads(raw[8:8 + jlen])
     (n,) = struct.unpack_from("<I", raw, 8 + jlen)
-    at = 12 + jlen
-    cols = []
-    for _ in range(6):
-        cols.append(struct.unpack_from(f"<{n}f", raw, at))
-        at += 4 * n
-    check(at == len(raw), "the frame's length is its header plus 6 float32 columns")
+    at = 16 + jlen
+    cols = {}
+    for name, kind in info["columns"]:
+        code, size = {"u8": ("B", 1), "u16": ("H", 2), "f32": ("f", 4), "f64": ("d", 8)}[kind]
+        cols[name] = struct.unpack_from(f"<{n}{code}", raw, at)
+        at += (n * size + 7) // 8 * 8
+    check(at == len(raw), f"the frame's length is its header plus its {len(cols)} columns ({info['packing']})")
+    if info["packing"] == "compact":
+        sx, sy, sr = info["scale"]
+        cols["x"] = tuple(q * sx for q in cols["x"])
+        cols["y"] = tuple(q * sy for q in cols["y"])
+        cols["r"] = tuple(q * sr for q in cols["r"]) if "r" in cols else (info["radius"],) * n
     return info, cols
-
-
-def f32(text):
-    return struct.unpack("<f", struct.pack("<f", float(text)))[0]
 
 
 def command_line():
@@ -61,16 +66,45 @@ def main():
         status, info = server.json("/api/log/info?name=0:gas.ede")
         check(status == 200 and info["disks"] == 400 and info["keyframes"] > 2, "a log's summary (several keyframes)")
 
-        # Frames are the exact states of ede-replay --at, seeking through keyframes.
+        # Exact frames (?exact=1) are the states of ede-replay --at, seeking through keyframes, to the bit.
         for t in ["0", "0.0123456789", str(info["end"] / 2), "end"]:
-            status, raw, ctype = server.get(f"/api/log/frame?name=0:gas.ede&t={t}")
+            status, raw, ctype = server.get(f"/api/log/frame?name=0:gas.ede&t={t}&exact=1")
             check(status == 200 and ctype == "application/octet-stream", f"frame at t = {t}")
-            finfo, (x, y, r, speed, species, disp) = parse_frame(raw)
+            finfo, cols = parse_frame(raw)
             rows = replay_at(log, t)
             check(finfo["sent"] == len(rows) == 400, f"t = {t}: every disk sent")
-            same = all(f32(row["x"]) == x[i] and f32(row["y"]) == y[i] and f32(row["radius"]) == r[i]
-                       for i, row in enumerate(rows))
-            check(same, f"t = {t}: positions and radii equal ede-replay --at {t} (as float32)")
+            same = all(float(row["x"]) == cols["x"][i] and float(row["y"]) == cols["y"][i] and
+                       float(row["radius"]) == cols["r"][i] for i, row in enumerate(rows))
+            check(same, f"t = {t}: exact frames: positions and radii equal ede-replay --at {t} (float64, to the bit)")
+        # Compact frames (the default): 16-bit positions within half a step (box / 65535) of the exact
+        # ones, one colour byte: the speed class of ede-replay's velocities, or the species.
+        t = str(info["end"] / 3)
+        rows = replay_at(log, t)
+        status, raw, _ = server.get(f"/api/log/frame?name=0:gas.ede&t={t}")
+        finfo, cols = parse_frame(raw)
+        half = 0.5 * finfo["lx"] / 65535 * (1 + 1e-9)
+        err = max(max(abs(float(row["x"]) - cols["x"][i]), abs(float(row["y"]) - cols["y"][i])) for i, row in enumerate(rows))
+        check(finfo["packing"] == "compact" and [c[0] for c in finfo["columns"]] == ["x", "y", "colour"] and
+              err <= half, f"compact frame: x, y within half a step of ede-replay --at (largest {err:.2e} <= {half:.2e}),"
+                           f" the radius once (all equal: {finfo['radius']})")
+        check(len(raw) <= 16 + len(raw[8:8 + struct.unpack_from('<I', raw, 4)[0]]) + 5 * 400 + 24,
+              f"compact frame: 5 bytes a disk plus the JSON ({len(raw)} bytes for 400 disks)")
+        lo, hi = finfo["class_speeds"]
+        speeds = [math.hypot(float(row["vx"]), float(row["vy"])) for row in rows]
+        want = [0 if v < lo else 2 if v > hi else 1 for v in speeds]
+        check(list(cols["colour"]) == want and sorted(set(want)) == [0, 1, 2],
+              f"colour=speed (default): the byte is the speed class of each disk's velocity in ede-replay --at")
+        status, raw, _ = server.get(f"/api/log/frame?name=0:gas.ede&t={t}&colour=species")
+        finfo, cols = parse_frame(raw)
+        check(list(cols["colour"]) == [finfo["species_names"].index(row["species"]) for row in rows],
+              "colour=species: the byte is the species")
+        status, raw, _ = server.get(f"/api/log/frame?name=0:gas.ede&t={t}&colour=displacement&exact=1")
+        finfo, cols = parse_frame(raw)
+        start = replay_at(log, "0")
+        disp = [math.hypot(float(a["x"]) - float(b["x"]), float(a["y"]) - float(b["y"])) for a, b in zip(rows, start)]
+        check(abs(finfo["colour"]["displacement_max"] - max(disp)) <= 1e-12 and
+              all(abs(c - 255 * d / max(disp)) <= 0.5 + 1e-9 for c, d in zip(cols["colour"], disp)),
+              "colour=displacement: the byte is the displacement from t = 0 in 255ths of the largest")
         status, raw, _ = server.get("/api/log/frame?name=0:gas.ede&t=0.3&max=100")
         finfo, cols = parse_frame(raw)
         check(finfo["stride"] == 4 and finfo["sent"] == 100 and finfo["disks"] == 400,
@@ -92,6 +126,8 @@ def main():
         error("/api/log/frame?name=0:gas.ede&t=abc", 400)
         error("/api/log/frame?name=0:gas.ede&t=1e300", 400)
         error("/api/log/frame?name=0:gas.ede", 400)
+        error("/api/log/frame?name=0:gas.ede&t=0&colour=rainbow", 400)
+        error("/api/log/frame?name=0:gas.ede&t=0&exact=yes", 400)
         error("/api/scene?name=0:../../../etc/passwd", 403)
         error("/api/no-such-thing", 404)
         error("/" + "a" * 9000, 414)
@@ -143,7 +179,7 @@ def main():
                     break
                 time.sleep(0.05)
             time.sleep(0.3)  # the worker publishes the state it paused at
-            status, raw, _ = server.get("/api/run/frame")
+            status, raw, _ = server.get("/api/run/frame?exact=1")
             return parse_frame(raw)
 
         server.post("/api/run/go")
@@ -170,7 +206,7 @@ def main():
         check(r.returncode == 0 and "verified" in r.stdout and "incomplete" not in r.stdout,
               "ede-replay verify passes on the finished run's log: " + r.stdout.strip()[:200])
         end_rows = replay_at(live_log, "end")
-        check(len(end_rows) == 300 and all(f32(row["x"]) == cols[0][i] and f32(row["y"]) == cols[1][i]
+        check(len(end_rows) == 300 and all(float(row["x"]) == cols["x"][i] and float(row["y"]) == cols["y"][i]
                                            for i, row in enumerate(end_rows)),
               "the log ends at exactly the state the page was shown at FINISH")
         # Pressure: the page's formula on the two frames' sums, against ede-stats pressure --from a --to b.
@@ -221,11 +257,11 @@ def main():
               f"the reversed run goes on to its end: {st['status']}, reversed at {st['reversals']}")
         t_r = st["reversals"][0]
         log_name = "1:" + st["log"]
-        status, raw, _ = server.get(f"/api/log/frame?name={log_name}&t={2 * t_r!r}")
+        status, raw, _ = server.get(f"/api/log/frame?name={log_name}&t={2 * t_r!r}&exact=1")
         check(status == 200, f"the reversed run's log reads at twice the reversal time: {status} {raw[:300]!r}")
         back = parse_frame(raw)[1]
-        start = parse_frame(server.get(f"/api/log/frame?name={log_name}&t=0")[1])[1]
-        err = max(max(abs(back[0][i] - start[0][i]), abs(back[1][i] - start[1][i])) for i in range(300))
+        start = parse_frame(server.get(f"/api/log/frame?name={log_name}&t=0&exact=1")[1])[1]
+        err = max(max(abs(back["x"][i] - start["x"][i]), abs(back["y"][i] - start["y"][i])) for i in range(300))
         check(err < 1e-5, f"reverse time: at 2 t_r every disk is back where it started (largest error {err:.1e} < 1e-5)")
     finally:
         code = server.close()

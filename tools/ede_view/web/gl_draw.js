@@ -1,8 +1,7 @@
 // ede-view's WebGL2 disk layer: every disk one point (gl.POINTS, gl_PointSize its diameter in pixels, at
 // least one pixel), cut to a circle in the fragment shader, coloured from a palette uniform by its colour
-// group. The frame's float32 columns x, y, r go to the GPU as they are (bufferData on the typed arrays the
-// response was parsed into: no per-disk JavaScript), so the page's cost per frame is the upload and one
-// draw call. Disks below a pixel are drawn as one pixel each: at 10^6 disks in 720 pixels that is the
+// group. The frame's x, y, r, decoded to float32 by view.js, and its colour groups go to the GPU as they
+// are (bufferData on the typed arrays), so the page's cost per frame is the upload and one draw call. Disks below a pixel are drawn as one pixel each: at 10^6 disks in 720 pixels that is the
 // density view. In headless chromium without a GPU this runs on SwiftShader (software), still far
 // cheaper on the page's main thread than the 2D canvas, whose pixels the main thread writes itself.
 // Rejected: instanced quads (two triangles a disk: six times the vertices for the same circles; points

@@ -4,10 +4,11 @@
 // simply skips frames. window.edeView exposes what was drawn (positions, time, counts) for the tests
 // (tests/tools/view/) and for anyone curious, in the browser's console.
 // Disks are drawn with WebGL2 where the browser has it (gl_draw.js: one instanced point per disk, the
-// circle cut in the fragment shader, straight from the frame's float32 columns), else with the 2D canvas
+// circle cut in the fragment shader, from the frame's decoded float32 columns), else with the 2D canvas
 // below; the box and wall segments are drawn on a transparent 2D canvas over the WebGL one. The
 // histograms and monitors are redrawn at most 10 times a second while frames stream (they are text and
-// bars nobody reads at 60 Hz, and their layout cost the main thread as much as the disks).
+// bars nobody reads at 60 Hz, and their layout cost the main thread as much as the disks). A crater log
+// gets the crater view: the server's surface profiles and crater metrics drawn over the disks.
 // Rejected: a framework or a plotting library (a build step or a CDN); WebGL only (a browser without it
 // would show nothing: the 2D path stays as the fallback, and ?draw=2d forces it for comparison).
 'use strict';
@@ -34,7 +35,10 @@ async function api(path, options) {
   return res;
 }
 
-// Frame: "EDEF" | u32 json bytes | JSON | u32 n | f32 x, y, r, speed, species, displacement.
+// Frame (frame.hpp): "EDEF" | u32 json bytes | JSON | u32 n | u32 0 | the columns JSON "columns" lists,
+// each padded to 8 bytes. Compact frames carry x, y (and r when radii differ) as u16 fixed point over the
+// box, decoded here into float32 for drawing; exact ones (?exact=1) carry float64, kept in f.exact.
+const COLUMN_TYPES = { u8: Uint8Array, u16: Uint16Array, f32: Float32Array, f64: Float64Array };
 function parseFrame(buffer) {
   const dv = new DataView(buffer);
   const magic = String.fromCharCode(dv.getUint8(0), dv.getUint8(1), dv.getUint8(2), dv.getUint8(3));
@@ -42,32 +46,53 @@ function parseFrame(buffer) {
   const jsonBytes = dv.getUint32(4, true);
   const info = JSON.parse(new TextDecoder().decode(new Uint8Array(buffer, 8, jsonBytes)));
   const n = dv.getUint32(8 + jsonBytes, true);
-  let at = 12 + jsonBytes;
-  const col = () => { const a = new Float32Array(buffer, at, n); at += 4 * n; return a; };
-  return { info, n, x: col(), y: col(), r: col(), speed: col(), species: col(), displacement: col() };
+  let at = 16 + jsonBytes;
+  const cols = {};
+  for (const [name, type] of info.columns) {
+    const T = COLUMN_TYPES[type];
+    cols[name] = new T(buffer, at, n);
+    at += Math.ceil(n * T.BYTES_PER_ELEMENT / 8) * 8;
+  }
+  const f = { info, n, colour: cols.colour };
+  if (info.packing === 'exact') {
+    f.exact = { x: cols.x, y: cols.y, r: cols.r };
+    f.x = Float32Array.from(cols.x);
+    f.y = Float32Array.from(cols.y);
+    f.r = Float32Array.from(cols.r);
+  } else {
+    const decode = (q, scale) => { const v = new Float32Array(n); for (let i = 0; i < n; i++) v[i] = q[i] * scale; return v; };
+    f.x = decode(cols.x, info.scale[0]);
+    f.y = decode(cols.y, info.scale[1]);
+    f.r = cols.r ? decode(cols.r, info.scale[2]) : new Float32Array(n).fill(info.radius);
+  }
+  return f;
 }
+
+// The frames the page asks for: coloured as the page colours, exact when the page's address says
+// ?exact=1 (or edeView.exact is set: the tests compare exact positions with ede-replay --at).
+const pageParams = new URLSearchParams(location.search);
+view.exact = pageParams.get('exact') === '1';
+function frameParams() { return 'colour=' + $('colour').value + (view.exact ? '&exact=1' : ''); }
 
 const SPECIES = ['#4fc3f7', '#ffb74d', '#81c784', '#e57373', '#ba68c8', '#fff176', '#a1887f', '#90a4ae'];
 const CLASSES = ['#2962ff', '#00c853', '#ff1744'];  // GasLab: slow blue, medium green, fast red
 const RAMP = ['#313695', '#4575b4', '#74add1', '#abd9e9', '#fee090', '#fdae61', '#f46d43', '#d73027', '#a50026'];
 
-// The colour group of every disk: an index into the palette returned.
+// The colour group of every disk (an index into the palette returned), from the frame's colour byte: the
+// speed class, the species, or the displacement in 255ths of the frame's largest (frame.hpp).
 function colourGroups(f) {
-  const mode = $('colour').value, g = new Uint8Array(f.n);
-  if (mode === 'species') {
-    for (let i = 0; i < f.n; i++) g[i] = f.species[i] % SPECIES.length;
+  const by = f.info.colour.by, c = f.colour;
+  if (by === 'species') {
+    const g = new Uint8Array(f.n);
+    for (let i = 0; i < f.n; i++) g[i] = c[i] % SPECIES.length;
     return { groups: g, palette: SPECIES };
   }
-  if (mode === 'displacement') {
-    let max = 0;
-    for (let i = 0; i < f.n; i++) max = Math.max(max, f.displacement[i]);
-    const k = max > 0 ? (RAMP.length - 1) / max : 0;
-    for (let i = 0; i < f.n; i++) g[i] = Math.round(f.displacement[i] * k);
+  if (by === 'displacement') {
+    const g = new Uint8Array(f.n), k = (RAMP.length - 1) / 255;
+    for (let i = 0; i < f.n; i++) g[i] = Math.round(c[i] * k);
     return { groups: g, palette: RAMP };
   }
-  const [lo, hi] = f.info.class_speeds;
-  for (let i = 0; i < f.n; i++) g[i] = f.speed[i] < lo ? 0 : f.speed[i] > hi ? 2 : 1;
-  return { groups: g, palette: CLASSES };
+  return { groups: c, palette: CLASSES };
 }
 
 // Colours as the canvas's pixels hold them (RGBA bytes read as one little-endian uint32).
@@ -84,7 +109,7 @@ let image = null;
 // The WebGL2 disk layer (gl_draw.js), or null: then the 2D canvas draws the disks too.
 // ?draw=2d or ?draw=webgl force a path (for the benchmark); by default WebGL unless it is software-rendered
 // and the disks are small enough for the 2D pixel path (gl_draw.js says why).
-const drawMode = new URLSearchParams(location.search).get('draw') || 'auto';
+const drawMode = pageParams.get('draw') || 'auto';
 const gl = drawMode === '2d' ? null : makeGlDisks($('disks-gl'));
 view.renderer = gl ? gl.renderer : 'none (2D canvas)';
 
@@ -157,6 +182,7 @@ function drawDisks(f) {
   }
   ctx.strokeStyle = '#666';
   ctx.strokeRect(0.5, 0.5, lx * scale - 1, ly * scale - 1);
+  if (f.info.crater && !f.info.crater.error) drawCrater(ctx, f.info.crater, scale, ly);
   if (f.info.segments) {  // the scene's wall segments
     ctx.strokeStyle = '#ddd';
     ctx.lineWidth = 2;
@@ -169,6 +195,37 @@ function drawDisks(f) {
     ctx.stroke();
     ctx.lineWidth = 1;
   }
+}
+
+// The crater view (crater_view.hpp): the bed's surface at the log's start (grey, dashed) and now (yellow),
+// as steps over the profile's bins, and the crater's extent [left, right) marked above the old surface.
+function drawCrater(ctx, c, scale, ly) {
+  const profile = (heights) => {
+    ctx.beginPath();
+    heights.forEach((h, k) => {
+      const x0 = k * c.bin_width * scale, x1 = (k + 1) * c.bin_width * scale, y = (ly - h) * scale;
+      k ? ctx.lineTo(x0, y) : ctx.moveTo(x0, y);
+      ctx.lineTo(x1, y);
+    });
+    ctx.stroke();
+  };
+  ctx.lineWidth = 2;
+  ctx.setLineDash([6, 4]);
+  ctx.strokeStyle = '#bbb';
+  profile(c.before);
+  ctx.setLineDash([]);
+  ctx.strokeStyle = '#ffd600';
+  profile(c.after);
+  if (c.has_crater) {
+    const top = Math.max(...c.before), y = (ly - top) * scale - 8;
+    ctx.strokeStyle = '#ff5252';
+    ctx.beginPath();
+    ctx.moveTo(c.left * scale, y); ctx.lineTo(c.right * scale, y);
+    ctx.moveTo(c.left * scale, y - 5); ctx.lineTo(c.left * scale, y + 5);
+    ctx.moveTo(c.right * scale, y - 5); ctx.lineTo(c.right * scale, y + 5);
+    ctx.stroke();
+  }
+  ctx.lineWidth = 1;
 }
 
 function drawHistogram(canvasId, h, curve, means) {
@@ -251,7 +308,16 @@ function monitors(f) {
     ...(view.pressure ? [['pressure, ' + view.pressure.formula + ' (Δt ' + view.pressure.dt.toPrecision(3) + ')',
       view.pressure.value.toPrecision(4) + ' (Z ' + view.pressure.z.toPrecision(4) + ')']] : []),
     ['disks drawn', f.n.toLocaleString('en') + (i.stride > 1 ? ' (every ' + i.stride + 'th of ' + i.disks.toLocaleString('en') + ')' : '')]);
+  if (i.crater && i.crater.error) rows.push(['crater', i.crater.error]);
+  else if (i.crater) {
+    const c = i.crater;
+    rows.push(['crater depth, width', c.has_crater ? c.depth.toPrecision(4) + ', ' + c.width.toPrecision(4) + ' (x ' +
+      c.left.toPrecision(3) + '–' + c.right.toPrecision(3) + ')' : 'none yet (largest drop ' + c.depth.toPrecision(3) + ')'],
+    ['crater area', c.area.toPrecision(4)],
+    ['bed disks displaced', c.displaced + ' of ' + c.bed_disks + (c.detached ? ' (' + c.detached + ' ejecta)' : '')]);
+  }
   if (i.status) rows.push(['run', i.status]);
+  if (i.message) rows.push(['message', i.message]);  // e.g. why a reversal could not be placed
   if (i.log) rows.push(['log', i.log]);
   $('monitors').replaceChildren(...rows.map(([k, v]) => {
     const tr = document.createElement('tr');
@@ -275,8 +341,9 @@ function show(f, streaming) {
   }
   view.drawMs = performance.now() - t0;
   view.frames++;
+  const drawn = f.exact || f;
   view.last = { time: f.info.time, t_request: f.info.t_request, events: f.info.events, n: f.n,
-    stride: f.info.stride, x: f.x, y: f.y, r: f.r, info: f.info };
+    stride: f.info.stride, x: drawn.x, y: drawn.y, r: drawn.r, packing: f.info.packing, info: f.info };
 }
 
 async function fetchFrame(path, streaming) {
@@ -355,6 +422,10 @@ async function openLog() {
   showError('');
   try {
     logInfo = await (await api('/api/log/info?name=' + encodeURIComponent($('log').value))).json();
+    // A crater scene (a bed and a projectile): the crater view on, coloured by displacement.
+    $('crater-view').hidden = $('crater-before-label').hidden = !logInfo.crater;
+    $('crater').checked = !!logInfo.crater;
+    if (logInfo.crater) $('colour').value = 'displacement';
     play = 0;
     setLogTime(logInfo.start);
   } catch (e) { logInfo = null; showError(e.message); }
@@ -370,11 +441,21 @@ function setLogTime(t, text) {
   $('time-text').value = logWanted;
 }
 
+// Plays forward (1) or backward (-1) at the chosen speed (simulated time per second of wall time), from
+// the time shown ('end' is the log's end time).
 function startPlay(direction) {
   if (!logInfo) return;
+  const from = logWanted === 'end' ? logInfo.end : Number(logWanted ?? logInfo.start);
   play = direction;
-  playFrom = Number(logWanted ?? logInfo.start);
+  playFrom = Number.isFinite(from) ? from : logInfo.start;
   playWall = performance.now();
+}
+
+// The crater view's request: on for a crater log with the box ticked, against the "before" time if given.
+function craterParams() {
+  if (!logInfo || !logInfo.crater || !$('crater').checked) return '';
+  const before = $('crater-before').value.trim();
+  return '&crater=1' + (before ? '&before=' + encodeURIComponent(before) : '');
 }
 
 // --- the loop ----------------------------------------------------------------------------------------
@@ -383,7 +464,7 @@ function startPlay(direction) {
 let pending = null;
 
 function liveFetch() {
-  return api('/api/run/frame').then((res) => res.arrayBuffer());
+  return api('/api/run/frame?' + frameParams()).then((res) => res.arrayBuffer());
 }
 
 async function tick() {
@@ -406,7 +487,8 @@ async function tick() {
       }
       if (logWanted !== null && logWanted !== logShown) {
         const want = logWanted;
-        await fetchFrame('/api/log/frame?name=' + encodeURIComponent($('log').value) + '&t=' + encodeURIComponent(want), play !== 0);
+        await fetchFrame('/api/log/frame?name=' + encodeURIComponent($('log').value) + '&t=' + encodeURIComponent(want) +
+          '&' + frameParams() + craterParams(), play !== 0);
         logShown = want;
       }
     }
@@ -427,6 +509,8 @@ async function init() {
     if (view.mode === 'log') refreshLogs(); else liveDirty = true;
   }));
   $('colour').addEventListener('change', () => { liveDirty = true; logShown = null; });
+  $('crater').addEventListener('change', () => { logShown = null; });
+  $('crater-before').addEventListener('change', () => { logShown = null; });
   $('scene').addEventListener('change', () => loadScene().catch((e) => showError(e.message)));
   $('setup').addEventListener('click', setup);
   $('go').addEventListener('click', goPause);
