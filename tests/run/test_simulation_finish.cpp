@@ -44,13 +44,13 @@ TEST_CASE("Simulation::finish ends a run early with a complete log that verifies
     REQUIRE(sim.finish());
     const ede::State here = sim.state();  // the state finish() left, at t
     CHECK(here.time == t);
-    CHECK(sim.run() == ede::RunStatus::Running);  // finished: runs nothing more
+    CHECK(sim.run() == ede::RunStatus::EndedByProgram);  // finished: runs nothing more
     CHECK(sim.state().events == here.events);
     const ede::EventCounts counts = sim.counts();
 
     auto log = ede::Log::open(path).value();
     CHECK(log.info().complete);
-    CHECK(log.info().final_status == "running");
+    CHECK(log.info().final_status == "ended by its program (Simulation::finish)");
     CHECK(log.info().end_time == t);
     // Every event is in the log (cell crossings are never logged), not only the complete chunks of 1024.
     CHECK(log.info().events == counts.events() - counts.of(ede::EventKind::Cell));

@@ -57,6 +57,7 @@ enum class RunStatus {
   CameToRest,         // an inelastic run cooled below the speeds the scalar type resolves; see the message
   NonFinite,          // a NaN or infinity appeared (overflow): the run stopped at that event; see the message
   Collapsed,          // inelastic collapse: a disk slowed below resolvable speeds while much energy remains
+  EndedByProgram,     // Simulation::finish ended it at the current time (its log is complete)
 };
 const char* to_string(RunStatus);
 bool is_finished(RunStatus);  // anything but Running

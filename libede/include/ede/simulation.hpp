@@ -142,7 +142,7 @@ class Simulation {
 
   // Ends the run here, as if a stop condition held now: processes the events still due at exactly the
   // current time, then closes the log the way a finished run's is closed (every event, the index, the
-  // final time; status "running", i.e. ended by its program), so every tool reads the log as complete,
+  // final time; status RunStatus::EndedByProgram), so every tool reads the log as complete,
   // `ede-replay verify` re-runs it to this time and `ede-replay --at end` is this state. Unlike close()
   // on an unfinished run, the log cannot be resumed afterwards. Then as close(). Idempotent.
   Status finish();

@@ -32,6 +32,7 @@ const char* to_string(RunStatus s) {
     case RunStatus::CameToRest: return "came to rest (speeds below what the scalar type resolves)";
     case RunStatus::NonFinite: return "stopped: a non-finite number (NaN or infinity) appeared";
     case RunStatus::Collapsed: return "inelastic collapse (a cluster slowed below resolvable speeds)";
+    case RunStatus::EndedByProgram: return "ended by its program (Simulation::finish)";
   }
   return "?";
 }

@@ -17,7 +17,8 @@ namespace {
 
 RunStatus status_from_text(const std::string& text) {
   for (RunStatus s : {RunStatus::ReachedTime, RunStatus::ReachedEvents, RunStatus::ReachedCollisions,
-                      RunStatus::ReachedEnergy, RunStatus::NoMoreEvents, RunStatus::Stalled, RunStatus::CameToRest})
+                      RunStatus::ReachedEnergy, RunStatus::NoMoreEvents, RunStatus::Stalled, RunStatus::CameToRest,
+                      RunStatus::NonFinite, RunStatus::Collapsed, RunStatus::EndedByProgram})
     if (text == to_string(s)) return s;
   return RunStatus::Running;
 }

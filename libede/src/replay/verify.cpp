@@ -273,9 +273,11 @@ Result<VerifyReport> verify_in(const std::shared_ptr<LogReader>& log, const Reru
 
   const double total = double(std::max<std::uint64_t>(log->total_events(), 1));
   RunStatus status;
-  // A complete log whose status is "running" was ended by its program (Simulation::finish) at its final
-  // time, with every event up to that time: the re-run stops there too, as advance_to does.
-  const bool finished_early = log->complete() && log->final_status() == to_string(RunStatus::Running);
+  // A complete log whose status is EndedByProgram was ended by Simulation::finish at its final time, with
+  // every event up to that time: the re-run stops there too, as advance_to does. ("running" is what
+  // finish wrote before that status existed, in logs of 2026-11-26.)
+  const bool finished_early = log->complete() && (log->final_status() == to_string(RunStatus::EndedByProgram) ||
+                                                  log->final_status() == to_string(RunStatus::Running));
   const T stop_at = finished_early ? replay.final_time() : T(0);
   bool paused = false;  // finished_early: the re-run has processed every event up to stop_at
   const auto slice = [&] {
@@ -289,6 +291,11 @@ Result<VerifyReport> verify_in(const std::shared_ptr<LogReader>& log, const Reru
   // Slices of 2^16 events: a difference stops the run within a few milliseconds of being found.
   while ((status = slice()) == RunStatus::Running && !paused && !cmp.stopped())
     if (opt.progress) opt.progress(double(cmp.compared()) / total, cmp.compared());
+  // Paused at the finished log's final time: the re-run ended as Simulation::finish ends a run (a log of
+  // the old spelling, "running", compares as written).
+  if (finished_early && paused && status == RunStatus::Running &&
+      log->final_status() == to_string(RunStatus::EndedByProgram))
+    status = RunStatus::EndedByProgram;
 
   VerifyReport r;
   r.events_compared = cmp.compared();

@@ -139,12 +139,13 @@ class SimulationOf final : public Simulation::Impl {
   }
 
   // Processes the events still due at the current time (as advance_to(now) would), then has the log
-  // written as a finished run's, with status Running: ended by its program (Simulation::finish).
+  // written as a finished run's, with status EndedByProgram (Simulation::finish).
   void finish_here() override {
     if (is_finished(status) || !write_error.empty() || guard_->tripped()) return;
     drive(std::numeric_limits<std::uint64_t>::max(), Time(engine_->time()));
     if (is_finished(status) || !write_error.empty() || guard_->tripped()) return;  // it ended on its own
-    guard_->on_finish(engine_->time(), engine_->particles(), RunStatus::Running);
+    guard_->on_finish(engine_->time(), engine_->particles(), RunStatus::EndedByProgram);
+    status = RunStatus::EndedByProgram;
   }
 
   void measure_impulses() {
