@@ -12,7 +12,6 @@
 #pragma once
 
 #include "core/geometry.hpp"
-#include "engine/pair_root.hpp"
 
 namespace ede {
 
@@ -73,13 +72,12 @@ struct Rough {
 };
 
 // The pair contact-time root: a function, not a flag. The library's engines use the stable form of
-// geometry.hpp, computed without early returns (pair_root.hpp: the same bits); study/ adds a textbook one
-// (for the accuracy study) without touching the engine.
+// geometry.hpp; study/ adds a textbook one (for the accuracy study) without touching the engine.
 struct StableContact {
   static constexpr const char* kLabel = "";  // appended to EngineApi::effects()
   template <class T>
   static T time(T dx, T dy, T dvx, T dvy, T s, T b_noise2) {
-    return pair_contact_time_unbranched(dx, dy, dvx, dvy, s, b_noise2);
+    return pair_contact_time(dx, dy, dvx, dvy, s, b_noise2);
   }
 };
 
