@@ -24,6 +24,7 @@
 // orders of magnitude; the width follows it at each year).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -67,8 +68,7 @@ class EventQueue {
   explicit EventQueue(std::uint32_t n) { reset(n); }
 
   void reset(std::uint32_t n) {
-    buckets_ = 16;
-    while (buckets_ < n) buckets_ *= 2;
+    buckets_ = std::max<std::uint32_t>(16, n);  // one bucket per key: 4 B/disk of heads at every N
     head_.assign(std::size_t(buckets_) + 2, kNil);
     time_.resize(n);
     kind_.resize(n);
@@ -289,7 +289,7 @@ class EventQueue {
     place(pos, d);
   }
 
-  std::uint32_t buckets_ = 16;  // per year (a power of two, ~N / 4)
+  std::uint32_t buckets_ = 16;  // per year: max(16, N) (a power of two >= N cost up to 8 B/disk)
   std::uint32_t cur_ = 16;      // the current bucket: keys in buckets <= cur_ are in the heap
   T base_ = T(0);               // the year's start time
   double inv_width_ = 1;        // buckets per unit time
