@@ -6,10 +6,12 @@
 // whose time comes from the same boundaries as here (boundary_x/_y), so round-off can leave a disk a hair
 // outside its cell but never lets a pair be missed (cells are wider than a diameter by a relative margin
 // far above round-off).
-// Storage: intrusive doubly linked lists: O(1) moves. The forward link and the cell index live in the
-// disk's own record (Disk::next_in_cell, Disk::cell), so walking a cell's list reads each neighbour's
-// record once, the line the prediction needs anyway; the grid holds the heads and the backward links
-// (only removals read them).
+// Storage: intrusive singly linked lists. The link and the cell index live in the disk's own record
+// (Disk::next_in_cell, Disk::cell), so walking a cell's list reads each neighbour's record once, the line
+// the prediction needs anyway; the grid holds only the heads. A removal walks its cell's list to the disk
+// (a cell holds ~1 disk on average, at most a handful, and those records are read by the crossing's scan
+// anyway). Rejected: backward links (doubly linked lists, O(1) removal) cost 4 B/disk and gave the same
+// lists in the same order (docs/performance.md, "Memory cuts").
 // Rejected: fixed-capacity cell arrays (a polydisperse or clustered scene overflows them) and neighbour
 // lists (Verlet lists need a skin and rebuilds, and their size grows with density).
 #pragma once
@@ -39,7 +41,6 @@ class CellGrid {
     wy_ = ly / T(ny);
     disks_ = disks.data();
     head_.assign(std::size_t(nx) * std::size_t(ny), kNone);
-    prev_.assign(disks.size(), kNone);
     for (Disk<T>& d : disks) d.next_in_cell = d.cell = kNone;
   }
 
@@ -64,19 +65,15 @@ class CellGrid {
   void insert(std::int32_t disk, std::int32_t cell) {
     Disk<T>& d = disks_[disk];
     d.cell = cell;
-    prev_[disk] = kNone;
     d.next_in_cell = head_[cell];
-    if (head_[cell] != kNone) prev_[head_[cell]] = disk;
     head_[cell] = disk;
   }
 
   void remove(std::int32_t disk) {
     Disk<T>& d = disks_[disk];
-    if (prev_[disk] != kNone)
-      disks_[prev_[disk]].next_in_cell = d.next_in_cell;
-    else
-      head_[d.cell] = d.next_in_cell;
-    if (d.next_in_cell != kNone) prev_[d.next_in_cell] = prev_[disk];
+    std::int32_t* link = &head_[d.cell];
+    while (*link != disk) link = &disks_[*link].next_in_cell;
+    *link = d.next_in_cell;
     d.cell = d.next_in_cell = kNone;
   }
 
@@ -91,7 +88,7 @@ class CellGrid {
     disks_[disk].next_in_cell = kNone;
   }
 
-  std::size_t memory_bytes() const { return (head_.capacity() + prev_.capacity()) * sizeof(std::int32_t); }
+  std::size_t memory_bytes() const { return head_.capacity() * sizeof(std::int32_t); }
 
  private:
   static std::int32_t index_of(T x, T width, std::int32_t n) {
@@ -104,7 +101,7 @@ class CellGrid {
   std::int32_t nx_ = 1, ny_ = 1;
   T lx_ = 1, ly_ = 1, wx_ = 1, wy_ = 1;
   Disk<T>* disks_ = nullptr;
-  std::vector<std::int32_t> head_, prev_;
+  std::vector<std::int32_t> head_;
 };
 
 }  // namespace ede

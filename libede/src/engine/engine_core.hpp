@@ -64,15 +64,51 @@ class Engine final : public EngineApi<T> {
   static constexpr bool kDissipative = Dissipation::kDissipative;
   static constexpr bool kGravity = Field::kGravity;
 
-  // One disk's current prediction: its earliest collision (pair or wall) and its cell crossing, kept
-  // apart so a crossing can update the collision part with the new neighbours only.
+  // One disk's current prediction: its earliest collision (pair, wall or segment) and its cell crossing's
+  // direction, kept apart so a crossing can update the collision part with the new neighbours only. The
+  // crossing's time is not kept: it only chooses the queue key, right when it is computed (the key holds
+  // whichever time won). 16 bytes in double (32 before issue 15's memory round: docs/performance.md):
+  // `who` = partner (29 bits: disk id, WallId or segment number; all ones for none) | kind code << 29;
+  // `check` = the partner's counter when predicted (its low 30 bits) << 2 | crossing direction. A pair
+  // prediction is stale when the partner's counter moved since: 30 bits wrap only after 2^30 collisions of
+  // the partner while this prediction stands, as 32 bits did after 2^32 (never, in any run so far).
+  // Rejected: separate fields (24 B with the padding).
   struct Prediction {
+    static constexpr std::uint32_t kPartnerBits = kTagDiskBits, kPartnerMask = (1u << kPartnerBits) - 1;
+    static constexpr std::uint32_t kCounterMask = (1u << 30) - 1;
     T t_coll;
-    T t_cross;
-    std::int32_t partner;           // disk id or WallId
-    std::uint32_t partner_counter;  // the partner's counter when predicted (pairs)
-    EventKind coll_kind;            // Pair or Wall
-    CrossDir cross_dir;
+    std::uint32_t who;
+    std::uint32_t check;
+
+    std::int32_t partner() const {
+      const std::uint32_t p = who & kPartnerMask;
+      return p == kPartnerMask ? -1 : std::int32_t(p);
+    }
+    EventKind coll_kind() const {
+      static constexpr EventKind kOf[] = {EventKind::Pair, EventKind::Wall, EventKind::Segment, EventKind::Pair};
+      return kOf[who >> kPartnerBits];
+    }
+    // The partner of a pending (finite) event: never none.
+    std::int32_t partner_id() const { return std::int32_t(who & kPartnerMask); }
+    CrossDir cross_dir() const { return CrossDir(check & 3u); }
+    bool partner_moved(std::uint32_t counter_now) const { return ((counter_now ^ (check >> 2)) & kCounterMask) != 0; }
+    // The whole prediction at once (predict()); set_coll and set_cross update one part (cross_cell()).
+    void set(const Candidate<T>& c, std::uint32_t counter, CrossDir dir) {
+      t_coll = c.time;
+      who = code_of(c);
+      check = (counter & kCounterMask) << 2 | std::uint32_t(dir);
+    }
+    void set_coll(const Candidate<T>& c, std::uint32_t counter) {
+      t_coll = c.time;
+      who = code_of(c);
+      check = (counter & kCounterMask) << 2 | (check & 3u);
+    }
+    // Partner -1 (none) becomes all ones in 29 bits by the mask; the kind code is 0 Pair, 1 Wall, 2 Segment.
+    static std::uint32_t code_of(const Candidate<T>& c) {
+      const std::uint32_t code = c.kind == EventKind::Segment ? 2u : std::uint32_t(c.kind);
+      return (std::uint32_t(c.partner) & kPartnerMask) | code << kPartnerBits;
+    }
+    void set_cross(CrossDir dir) { check = (check & ~3u) | std::uint32_t(dir); }
   };
 
  public:
@@ -95,7 +131,7 @@ class Engine final : public EngineApi<T> {
     find_big_disks(init, shape.split);
     if constexpr (kSegments) setup_segments(options.physics, init, shape);
     queue_.reset(static_cast<std::uint32_t>(p_.size()));
-    pred_.assign(p_.size(), Prediction{kNever<T>, kNever<T>, -1, 0, EventKind::Pair, kCrossRight});
+    pred_.assign(p_.size(), Prediction{kNever<T>, Prediction::kPartnerMask, 0});
     stall_limit_ = options.stall_limit ? options.stall_limit
                                        : std::max<std::uint64_t>(1000000, 100 * std::uint64_t(p_.size()));
     if (options.stop.collisions_per_particle)
@@ -551,14 +587,9 @@ class Engine final : public EngineApi<T> {
     }
     if (!big_.empty()) scan_big(i, pi, vi, big, best);
     Prediction& pr = pred_[i];
-    pr.t_coll = best.time;
-    pr.coll_kind = best.kind;
-    pr.partner = best.partner;
-    pr.partner_counter = counter_of(best);
     const Crossing<T> cross = crossing(d, cell);
-    pr.t_cross = cross.time;
-    pr.cross_dir = cross.dir;
-    push(i);
+    pr.set(best, counter_of(best), cross.dir);
+    push(i, cross.time, best.kind);
   }
 
   Crossing<T> crossing(const Disk<T>& d, std::int32_t cell) const {
@@ -572,12 +603,13 @@ class Engine final : public EngineApi<T> {
     return c.kind == EventKind::Pair && c.partner >= 0 ? p_.disk[c.partner].counter : 0;
   }
 
-  void push(std::int32_t i) {
+  // The disk's queue key: its collision (of kind coll_kind) or its crossing, whichever comes first.
+  void push(std::int32_t i, T t_cross, EventKind coll_kind) {
     const Prediction& pr = pred_[i];
-    if (pr.t_coll <= pr.t_cross)
-      queue_.set(std::uint32_t(i), pr.t_coll, pr.coll_kind);
+    if (pr.t_coll <= t_cross)
+      queue_.set(std::uint32_t(i), pr.t_coll, coll_kind);
     else
-      queue_.set(std::uint32_t(i), pr.t_cross, is_wrap(i, pr.cross_dir) ? EventKind::Wrap : EventKind::Cell);
+      queue_.set(std::uint32_t(i), t_cross, is_wrap(i, pr.cross_dir()) ? EventKind::Wrap : EventKind::Cell);
   }
 
   bool is_wrap(std::int32_t i, CrossDir dir) const {
@@ -601,7 +633,7 @@ class Engine final : public EngineApi<T> {
     const std::int32_t i = std::int32_t(tag_disk(key.tag));
     const EventKind kind = tag_kind(key.tag);
     const Prediction& pr = pred_[i];
-    if (kind == EventKind::Pair && p_.disk[pr.partner].counter != pr.partner_counter) {
+    if (kind == EventKind::Pair && pr.partner_moved(p_.disk[pr.partner_id()].counter)) {
       ++counts_.stale;
       now_ = key.time;
       predict(i);
@@ -610,12 +642,12 @@ class Engine final : public EngineApi<T> {
     note_time(key.time);
     now_ = key.time;
     switch (kind) {
-      case EventKind::Pair: resolve_pair(i, pr.partner); break;
-      case EventKind::Wall: resolve_wall(i, pr.partner); break;
+      case EventKind::Pair: resolve_pair(i, pr.partner_id()); break;
+      case EventKind::Wall: resolve_wall(i, pr.partner_id()); break;
       case EventKind::Segment:
-        if constexpr (kSegments) resolve_segment(i, pr.partner);
+        if constexpr (kSegments) resolve_segment(i, pr.partner_id());
         break;
-      default: cross_cell(i, pr.cross_dir, kind); break;
+      default: cross_cell(i, pr.cross_dir(), kind); break;
     }
     return true;
   }
@@ -763,7 +795,7 @@ class Engine final : public EngineApi<T> {
     ++counts_.by_kind[int(kind)];
 
     Prediction& pr = pred_[i];
-    Candidate<T> best{pr.t_coll, pr.coll_kind, pr.partner};
+    Candidate<T> best{pr.t_coll, pr.coll_kind(), pr.partner()};
     const Position2<T> pi = pos_at(p_.disk[i]), vi = vel_at(p_.disk[i]);
     if (step_x != 0)
       for (std::int32_t k = -reach_y; k <= reach_y; ++k) scan_cell(i, pi, vi, cx + step_x * reach_x, cy + k, best);
@@ -771,16 +803,11 @@ class Engine final : public EngineApi<T> {
       for (std::int32_t k = -reach_x; k <= reach_x; ++k) scan_cell(i, pi, vi, cx + k, cy + step_y * reach_y, best);
     if (!big_.empty()) scan_big(i, pi, vi, big, best);
     if constexpr (kSegments) scan_segments(p_.disk[i], grid_.cell_of(i), big, best);
-    if (best.time != pr.t_coll || best.kind != pr.coll_kind || best.partner != pr.partner) {
-      pr.t_coll = best.time;
-      pr.coll_kind = best.kind;
-      pr.partner = best.partner;
-      pr.partner_counter = counter_of(best);
-    }
+    if (best.time != pr.t_coll || best.kind != pr.coll_kind() || best.partner != pr.partner())
+      pr.set_coll(best, counter_of(best));
     const Crossing<T> cross = crossing(p_.disk[i], grid_.cell_of(i));
-    pr.t_cross = cross.time;
-    pr.cross_dir = cross.dir;
-    push(i);
+    pr.set_cross(cross.dir);
+    push(i, cross.time, best.kind);
   }
 
   void wrap(std::int32_t i, CrossDir dir) {

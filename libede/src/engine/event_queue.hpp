@@ -13,7 +13,9 @@
 // twice their mean distance from that earliest key: a few keys per bucket). set() is O(1) (unlink, link)
 // for a key that lands in a later bucket, which is nearly every key: an event's new predictions lie ahead.
 // Links live in two int32 arrays beside the keys; a list head's backward link encodes its list, a heap
-// member's forward link is its heap position.
+// member's forward link is its heap position. A key is stored as its time (time_) and its kind (kind_, one
+// byte): the disk part of the tag is the key's index, so 9 bytes a key in double (16 as a struct, 12
+// packed; docs/performance.md, "Memory cuts"). Only equal times read the kinds.
 // Measured against the blocked tournament tree it replaces (docs/performance.md): the tree's walk to the
 // root for every popped disk cost ~440 instructions per update, 22 % of the run at N = 10^4.
 // Rejected: the blocked tournament tree (O(log N) per update, kept in git history), a binary heap of pair
@@ -22,6 +24,7 @@
 // orders of magnitude; the width follows it at each year).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -65,10 +68,10 @@ class EventQueue {
   explicit EventQueue(std::uint32_t n) { reset(n); }
 
   void reset(std::uint32_t n) {
-    buckets_ = 16;
-    while (buckets_ < n) buckets_ *= 2;
+    buckets_ = std::max<std::uint32_t>(16, n);  // one bucket per key: 4 B/disk of heads at every N
     head_.assign(std::size_t(buckets_) + 2, kNil);
-    keys_.resize(n);
+    time_.resize(n);
+    kind_.resize(n);
     next_.resize(n);
     prev_.resize(n);
     heap_.clear();
@@ -78,7 +81,8 @@ class EventQueue {
     inv_width_ = 1;
     never_min_ = kNil;
     for (std::uint32_t i = n; i-- > 0;) {
-      keys_[i] = {scalar_limits<T>::infinity(), make_tag(EventKind::Pair, i)};
+      time_[i] = scalar_limits<T>::infinity();
+      kind_[i] = EventKind::Pair;
       link(std::int32_t(i), never_list());
     }
     never_min_ = n ? 0 : kNil;
@@ -88,20 +92,20 @@ class EventQueue {
   // infinite time when nothing is due.
   QueueKey<T> top() {
     if (heap_.empty()) refill();
-    if (!heap_.empty()) return keys_[heap_[0]];
+    if (!heap_.empty()) return key(heap_[0]);
     return never_top();
   }
-  const QueueKey<T>& key_of(std::uint32_t disk) const { return keys_[disk]; }
+  QueueKey<T> key_of(std::uint32_t disk) const { return key(std::int32_t(disk)); }
 
   void set(std::uint32_t disk, T time, EventKind kind) {
     const std::int32_t d = std::int32_t(disk);
-    const QueueKey<T> key{time, make_tag(kind, disk)};
     if (prev_[d] == kInHeap) {
       const std::int32_t s = slot_for(time);
       if (s < 0) {  // stays in the heap: move it within
         const std::uint32_t pos = std::uint32_t(next_[d]);
-        const bool earlier = key < keys_[d];
-        keys_[d] = key;
+        const bool earlier = QueueKey<T>{time, make_tag(kind, disk)} < key(d);
+        time_[d] = time;
+        kind_[d] = kind;
         if (earlier)
           sift_up(pos);
         else
@@ -109,12 +113,14 @@ class EventQueue {
         return;
       }
       heap_remove(std::uint32_t(next_[d]));
-      keys_[d] = key;
+      time_[d] = time;
+      kind_[d] = kind;
       link(d, s);
       return;
     }
     unlink(d);
-    keys_[d] = key;
+    time_[d] = time;
+    kind_[d] = kind;
     const std::int32_t s = slot_for(time);
     if (s < 0)
       heap_push(d);
@@ -123,7 +129,7 @@ class EventQueue {
   }
 
   std::size_t memory_bytes() const {
-    return keys_.capacity() * sizeof(QueueKey<T>) +
+    return time_.capacity() * sizeof(T) + kind_.capacity() * sizeof(EventKind) +
            (next_.capacity() + prev_.capacity() + head_.capacity() + heap_.capacity()) * sizeof(std::int32_t);
   }
 
@@ -152,7 +158,7 @@ class EventQueue {
     prev_[d] = head_mark(list);
     if (h != kNil) prev_[h] = d;
     head_[std::size_t(list)] = d;
-    if (list == never_list() && never_min_ != kNil && keys_[d] < keys_[never_min_]) never_min_ = d;
+    if (list == never_list() && never_min_ != kNil && less(d, never_min_)) never_min_ = d;
   }
 
   void unlink(std::int32_t d) {
@@ -195,11 +201,11 @@ class EventQueue {
     T t_min = scalar_limits<T>::infinity();
     std::size_t count = 0;
     for (std::int32_t d = head_[of]; d != kNil; d = next_[d]) {
-      t_min = keys_[d].time < t_min ? keys_[d].time : t_min;
+      t_min = time_[d] < t_min ? time_[d] : t_min;
       ++count;
     }
     double sum = 0;
-    for (std::int32_t d = head_[of]; d != kNil; d = next_[d]) sum += double(keys_[d].time - t_min);
+    for (std::int32_t d = head_[of]; d != kNil; d = next_[d]) sum += double(time_[d] - t_min);
     const double span = 2 * sum / double(count);
     const double floor_span = std::max(std::abs(double(t_min)) * 1e-12, 1e-300);
     base_ = t_min;
@@ -209,7 +215,7 @@ class EventQueue {
     head_[of] = kNil;
     while (d != kNil) {
       const std::int32_t n = next_[d];
-      const std::int32_t s = slot_for(keys_[d].time);
+      const std::int32_t s = slot_for(time_[d]);
       if (s < 0)
         heap_push(d);
       else
@@ -224,9 +230,18 @@ class EventQueue {
     if (never_min_ == kNil) {
       never_min_ = h;
       for (std::int32_t d = next_[h]; d != kNil; d = next_[d])
-        if (keys_[d] < keys_[never_min_]) never_min_ = d;
+        if (less(d, never_min_)) never_min_ = d;
     }
-    return keys_[never_min_];
+    return key(never_min_);
+  }
+
+  QueueKey<T> key(std::int32_t d) const { return {time_[d], make_tag(kind_[d], std::uint32_t(d))}; }
+  // key(a) < key(b). Times differ nearly always; which is earlier is a coin flip the branch predictor
+  // cannot learn, so that comparison is a value, and only the rare tie branches to the kinds.
+  bool less(std::int32_t a, std::int32_t b) const {
+    const T ta = time_[a], tb = time_[b];
+    if (__builtin_expect(ta == tb, 0)) return make_tag(kind_[a], std::uint32_t(a)) < make_tag(kind_[b], std::uint32_t(b));
+    return ta < tb;
   }
 
   // --- the binary min-heap of the current bucket (positions in next_) ---
@@ -243,7 +258,7 @@ class EventQueue {
     const std::int32_t last = heap_.back();
     heap_.pop_back();
     if (pos == heap_.size()) return;
-    const bool earlier = keys_[last] < keys_[heap_[pos]];
+    const bool earlier = less(last, heap_[pos]);
     place(pos, last);
     if (earlier)
       sift_up(pos);
@@ -254,7 +269,7 @@ class EventQueue {
     const std::int32_t d = heap_[pos];
     while (pos > 0) {
       const std::uint32_t parent = (pos - 1) / 2;
-      if (!(keys_[d] < keys_[heap_[parent]])) break;
+      if (!less(d, heap_[parent])) break;
       place(pos, heap_[parent]);
       pos = parent;
     }
@@ -266,19 +281,20 @@ class EventQueue {
     while (true) {
       std::uint32_t child = 2 * pos + 1;
       if (child >= n) break;
-      if (child + 1 < n && keys_[heap_[child + 1]] < keys_[heap_[child]]) ++child;
-      if (!(keys_[heap_[child]] < keys_[d])) break;
+      if (child + 1 < n && less(heap_[child + 1], heap_[child])) ++child;
+      if (!less(heap_[child], d)) break;
       place(pos, heap_[child]);
       pos = child;
     }
     place(pos, d);
   }
 
-  std::uint32_t buckets_ = 16;  // per year (a power of two, ~N / 4)
+  std::uint32_t buckets_ = 16;  // per year: max(16, N) (a power of two >= N cost up to 8 B/disk)
   std::uint32_t cur_ = 16;      // the current bucket: keys in buckets <= cur_ are in the heap
   T base_ = T(0);               // the year's start time
   double inv_width_ = 1;        // buckets per unit time
-  std::vector<QueueKey<T>> keys_;     // one per disk
+  std::vector<T> time_;               // each disk's key: its time
+  std::vector<EventKind> kind_;       // and its kind (the tag is kind << 29 | disk)
   std::vector<std::int32_t> next_;    // list: next member or kNil; heap: position
   std::vector<std::int32_t> prev_;    // list: previous member, or head_mark(list) for the first; heap: kInHeap
   std::vector<std::int32_t> head_;    // first member of each bucket, then the overflow and never lists
