@@ -112,6 +112,7 @@ Event event_at(const unsigned char* rows, const EventRowLayout& l, std::size_t k
 template <class T>
 void derive(unsigned char* rows, std::size_t n, const RowPlan& p, const std::vector<T>& mass,
             const CollisionDisks* disks) {
+  if (p.impulse_x < 0 && !disks) return;  // nothing derived: the rows are as the library wrote them
   const EventRowLayout& l = p.layout;
   const std::size_t w = l.row_bytes;
   for (std::size_t k = 0; k < n; ++k) {

@@ -77,13 +77,7 @@ class PySimulation {
   std::string scene_text() const { return sim_->scene().source_text; }
   void write_state_csv(const std::string& path) const { value_or_raise(sim_->write_state_csv(path)); }
   // Simulation::finish: the log closed complete at the current time (not resumable).
-  void finish() {
-    Status s = [&] {
-      py::gil_scoped_release release;
-      return sim_->finish();
-    }();
-    value_or_raise(std::move(s));
-  }
+  void finish() { released([&] { return sim_->finish(); }); }
   py::dict impulses() const {
     const ImpulseSums p = sim_->impulses();
     py::dict d;
@@ -91,13 +85,7 @@ class PySimulation {
     d["virial"] = p.virial, d["pair_collisions"] = p.pair_collisions, d["wall_collisions"] = p.wall_collisions;
     return d;
   }
-  void close() {
-    Status s = [&] {
-      py::gil_scoped_release release;
-      return sim_->close();
-    }();
-    value_or_raise(std::move(s));
-  }
+  void close() { released([&] { return sim_->close(); }); }
   py::dict log_kept() const {
     const LogKept k = value_or_raise(sim_->log_kept());
     py::dict d;
