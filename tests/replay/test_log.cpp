@@ -232,6 +232,44 @@ TEST_CASE("Log::event_rows writes the columns' bits into packed rows, on any num
   CHECK(refused.error().message.find("does not fit a row of 73 bytes") != std::string::npos);
 }
 
+// A walk that writes neither positions nor velocities before computes neither (EventExtras); what an event
+// leaves unchanged (a wrap's velocities, a rough disk's spin in a wrap) must still be filled in.
+TEST_CASE("Narrow event rows hold the same velocities and spins after each event as the full events", "[replay][log][events]") {
+  const std::vector<std::vector<ede::Override>> runs = {
+      {}, {{"box.boundary=\"walls\""}}, {{"physics.roughness=0.5"}, {"physics.restitution=0.9"}}};
+  int variant = 0;
+  for (const auto& overrides : runs) {
+    const ede::Log log = logged("log-narrow-" + std::to_string(variant++) + ".ede", overrides);
+    const bool rough = log.info().rotates;
+    ede::EventRowLayout l;
+    l.index = 0, l.kind = 8, l.i = 9, l.j = 13, l.vix = 17, l.viy = 25, l.vjx = 33, l.vjy = 41, l.row_bytes = 49;
+    if (rough) l.omega_i = 49, l.omega_j = 57, l.row_bytes = 65;
+    const auto events = log.events({}).value();
+    std::vector<unsigned char> rows;
+    const std::uint64_t n = log.event_rows({}, l, [&](std::uint64_t r) {
+                                  rows.assign(r * l.row_bytes, 0);
+                                  return static_cast<void*>(rows.data());
+                                }).value();
+    REQUIRE(n == events.size());
+    const auto at = [&](std::uint64_t k, std::ptrdiff_t offset) {
+      double v;
+      std::memcpy(&v, rows.data() + k * l.row_bytes + offset, sizeof v);
+      return v;
+    };
+    std::size_t wraps = 0, mismatches = 0;
+    for (std::uint64_t k = 0; k < n; ++k) {
+      const ede::Event& e = events[k];
+      wraps += e.kind == ede::EventKind::Wrap;
+      const bool same = at(k, l.vix) == e.vix && at(k, l.viy) == e.viy && at(k, l.vjx) == e.vjx &&
+                        at(k, l.vjy) == e.vjy && (!rough || (at(k, l.omega_i) == e.omega_i && at(k, l.omega_j) == e.omega_j));
+      mismatches += !same;
+    }
+    INFO("variant " << variant << ", events " << n << ", wraps " << wraps);
+    CHECK(mismatches == 0);
+    CHECK((wraps > 0) == (variant != 2));  // the periodic runs wrap, the walled one cannot
+  }
+}
+
 TEST_CASE("Log::events_after_collisions finds where a collisions-per-disk schedule acts", "[replay][log][schedule]") {
   // 200 disks: an action scheduled at 2.5 collisions per disk acts right after pair collision 250, and is
   // logged as the event at the index events_after_collisions gives.

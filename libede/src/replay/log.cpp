@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <initializer_list>
 #include <limits>
 #include <memory>
 #include <thread>
@@ -186,14 +187,47 @@ struct EventFieldSink {
   static void write(const Field& f, std::size_t r, V v) {
     if (f.base) std::memcpy(f.base + r * f.stride, &v, sizeof v);
   }
+  // Which groups of fields anyone wants (set by finish()): put() skips a whole absent group with one test
+  // instead of one per field, and the walk computes positions and velocities before only when wanted.
+  bool want_at = false, want_pre = false, want_omega = false;
+
+  void finish() {
+    const auto any = [](std::initializer_list<const Field*> fs) {
+      for (const Field* f : fs)
+        if (f->base) return true;
+      return false;
+    };
+    want_at = any({&at[0], &at[1], &at[2], &at[3]});
+    want_pre = any({&pre[0], &pre[1], &pre[2], &pre[3], &omega_pre[0], &omega_pre[1]});
+    want_omega = any({&omega[0], &omega[1]});
+  }
+  EventExtras extras() const { return {.before = want_pre, .positions = want_at}; }
+
+  // Rows: every field has this stride (one row), so an event's place is computed once, not per field.
+  std::size_t row_stride = 0;
+
   template <class T>
   void put(std::size_t r, const ReplayedEvent<T>& e) const {
-    write(index, r, e.index), write(time, r, e.time), write(kind, r, static_cast<std::uint8_t>(e.kind));
-    write(i, r, e.i), write(j, r, e.j);
-    write(after[0], r, e.vix), write(after[1], r, e.viy), write(after[2], r, e.vjx), write(after[3], r, e.vjy);
-    write(at[0], r, e.xi), write(at[1], r, e.yi), write(at[2], r, e.xj), write(at[3], r, e.yj);
-    write(pre[0], r, e.vix0), write(pre[1], r, e.viy0), write(pre[2], r, e.vjx0), write(pre[3], r, e.vjy0);
-    write(omega[0], r, e.wi), write(omega[1], r, e.wj), write(omega_pre[0], r, e.wi0), write(omega_pre[1], r, e.wj0);
+    if (row_stride) {
+      const std::size_t at_row = r * row_stride;
+      put_fields(e, [at_row](const Field& f, auto v) {
+        if (f.base) std::memcpy(f.base + at_row, &v, sizeof v);
+      });
+    } else {
+      put_fields(e, [r](const Field& f, auto v) { write(f, r, v); });
+    }
+  }
+
+  template <class T, class Write>
+  [[gnu::always_inline]] void put_fields(const ReplayedEvent<T>& e, Write w) const {
+    w(index, e.index), w(time, e.time), w(kind, static_cast<std::uint8_t>(e.kind)), w(i, e.i), w(j, e.j);
+    w(after[0], e.vix), w(after[1], e.viy), w(after[2], e.vjx), w(after[3], e.vjy);
+    if (want_at) w(at[0], e.xi), w(at[1], e.yi), w(at[2], e.xj), w(at[3], e.yj);
+    if (want_pre) {
+      w(pre[0], e.vix0), w(pre[1], e.viy0), w(pre[2], e.vjx0), w(pre[3], e.vjy0);
+      w(omega_pre[0], e.wi0), w(omega_pre[1], e.wj0);
+    }
+    if (want_omega) w(omega[0], e.wi), w(omega[1], e.wj);
   }
 };
 
@@ -261,7 +295,7 @@ Result<std::uint64_t> write_events(const Log::Impl& impl, Replay<T>& cached, con
       if (!(e.time <= sp.t1)) return false;
       sink.put(offset + count++, e);
       return true;
-    });
+    }, sink.extras());
   };
   std::vector<std::thread> workers;
   for (std::size_t k = 1; k < n; ++k) workers.emplace_back(run_piece, k);
@@ -324,6 +358,7 @@ Result<EventColumns> Log::event_columns(const EventRange& range, bool positions,
       if (positions) at[k].resize(n), sink.at[k] = column_field(at[k]);
       if (before) pre[k].resize(n), sink.pre[k] = column_field(pre[k]);
     }
+    sink.finish();
     auto kept = write_events(*impl_, *replay, sp, sink, threads);
     if (!kept) return kept.error();
     const std::size_t m = kept.value();
@@ -366,6 +401,8 @@ Result<std::uint64_t> Log::event_rows(const EventRange& range, const EventRowLay
     for (int k = 0; k < 4; ++k) sink.after[k] = f(after[k]), sink.at[k] = f(at[k]), sink.pre[k] = f(pre[k]);
     sink.omega[0] = f(layout.omega_i), sink.omega[1] = f(layout.omega_j);
     sink.omega_pre[0] = f(layout.omega_i_before), sink.omega_pre[1] = f(layout.omega_j_before);
+    sink.row_stride = w;
+    sink.finish();
     return write_events(*impl_, *replay, sp, sink, threads);
   });
 }
