@@ -84,7 +84,7 @@ class Log:
             yield self.state(t)
 
     def events(self, t0=None, t1=None, *, first=None, last=None, positions=False, before=False, impulse=False,
-               collision=False):
+               collision=False, out=None):
         """The logged events with t0 <= time <= t1 (and index in [first, last)) as a numpy structured
         array: index, time, kind (EVENT_KINDS[kind]), i, j, and the velocities after the event vix, viy,
         vjx, vjy; with positions=True also xi, yi, xj, yj (at the event), before=True the velocities just
@@ -93,12 +93,16 @@ class Log:
         impact_parameter (b / (r_i + r_j), signed; pairs), relative_speed (|v_i - v_j| before; walls: |v_i|),
         normal_speed (the approach speed before; walls: |v_i . n|) and tangential_speed (signed; pairs);
         0 where an event has none (wraps, actions). Reals are otherwise in the log's scalar type. j is the
-        partner (pair), the wall (wall) or the edge (wrap)."""
+        partner (pair), the wall (wall) or the edge (wrap).
+
+        out: an array returned by an earlier call with the same field arguments, long enough for this
+        range: the rows are written into it (its first rows; the result is a view of them) instead of a
+        new array, so reading a long log window by window (first/last) reuses one buffer's memory."""
         for name, v in (("first", first), ("last", last)):
             if v is not None and (isinstance(v, bool) or not hasattr(v, "__index__")):
                 raise TypeError("events(%s=...): expected an int, got %s" % (name, type(v).__name__))
         return _ede.events(self._log, t0, t1, first, last, bool(positions), bool(before), bool(impulse),
-                           bool(collision))
+                           bool(collision), out)
 
     def count_events(self):
         """Events by kind, from the log's kind columns (no replay)."""

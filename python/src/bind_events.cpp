@@ -137,29 +137,61 @@ void derive(unsigned char* rows, std::size_t n, const RowPlan& p, const std::vec
 
 // The events as a numpy structured array written by the library straight into numpy's buffer
 // (Log::event_rows: one pass, the memory touched once, the walk on every core with the GIL released).
+// `out`, when given, must be exactly what this request would allocate (a 1-D, C-contiguous, writable array
+// of the request's dtype); its length is checked once the range's size is known.
+void check_out(const py::object& out, const py::object& dtype) {
+  if (!py::isinstance<py::array>(out))
+    throw py::type_error("events(out=...): expected a numpy array made by an earlier events() call with the same "
+                         "arguments, got " + std::string(py::str(py::type::of(out).attr("__name__"))));
+  const py::array a = py::reinterpret_borrow<py::array>(out);
+  if (!a.dtype().equal(dtype))
+    throw py::type_error("events(out=...): the array's dtype " + std::string(py::str(a.dtype())) +
+                         " is not the one these arguments give, " + std::string(py::str(dtype)) +
+                         ": pass an array returned by events() with the same positions/before/impulse/collision");
+  if (a.ndim() != 1 || !(a.flags() & py::array::c_style) || !a.writeable())
+    throw py::value_error("events(out=...): expected a writable, contiguous 1-D array (not a slice with a step)");
+}
+
 template <class T>
-py::array events_in(const Log& log, const EventRequest& request) {
+py::array events_in(const Log& log, const EventRequest& request, const py::object& out) {
   const RowPlan plan = plan_rows<T>(request, log.info().rotates);
   py::module_ np = py::module_::import("numpy");
   py::dict spec;
   spec["names"] = plan.names, spec["formats"] = plan.formats, spec["offsets"] = plan.offsets;
   spec["itemsize"] = plan.layout.row_bytes;
   const py::object dtype = np.attr("dtype")(spec);
+  if (!out.is_none()) check_out(out, dtype);
   py::array rows;
   unsigned char* data = nullptr;
   std::uint64_t kept = 0;
+  std::string too_short;  // set by the allocator when `out` cannot hold the range
   {
     py::gil_scoped_release release;
     std::vector<T> mass;
     if (request.impulse) mass = value_or_raise(log.state_at_event(0)).mass.values<T>();
     std::optional<CollisionDisks> disks;
     if (request.collision) disks = value_or_raise(collision_disks(log));
-    kept = value_or_raise(log.event_rows(request.range, plan.layout, [&](std::uint64_t n) -> void* {
+    auto written = log.event_rows(request.range, plan.layout, [&](std::uint64_t n) -> void* {
       py::gil_scoped_acquire hold;
-      rows = np.attr("empty")(n, dtype);
+      if (!out.is_none()) {
+        // A reused array: its pages are already mapped, so a window of a long log costs no page faults.
+        rows = py::reinterpret_borrow<py::array>(out);
+        if (std::uint64_t(rows.shape(0)) < n) {
+          too_short = "events(out=...): the range holds " + std::to_string(n) + " events, the array " +
+                      std::to_string(rows.shape(0)) + " rows: pass a longer array or a shorter range (first/last)";
+          return nullptr;
+        }
+      } else {
+        rows = np.attr("empty")(n, dtype);
+      }
       data = static_cast<unsigned char*>(rows.mutable_data());
       return data;
-    }));
+    });
+    if (!written && !too_short.empty()) {
+      py::gil_scoped_acquire hold;
+      throw py::value_error(too_short);
+    }
+    kept = value_or_raise(std::move(written));
     derive<T>(data, kept, plan, mass, disks ? &*disks : nullptr);
   }
   if (std::uint64_t(rows.shape(0)) != kept) rows = rows[py::slice(0, py::ssize_t(kept), 1)];
@@ -172,7 +204,7 @@ void bind_events(py::module_& m) {
   m.def(
       "events",
       [](const Log& log, py::object t0, py::object t1, py::object first, py::object last, bool positions,
-         bool before, bool impulse, bool collision) {
+         bool before, bool impulse, bool collision, py::object out) {
         const ScalarKind scalar = log.info().scalar;
         EventRequest r;
         if (!t0.is_none()) r.range.from_time = time_argument(t0, scalar, "events(t0)");
@@ -181,15 +213,15 @@ void bind_events(py::module_& m) {
         if (!last.is_none()) r.range.to_event = last.cast<std::uint64_t>();
         r.positions = positions, r.before = before, r.impulse = impulse, r.collision = collision;
         switch (scalar) {
-          case ScalarKind::Float: return events_in<float>(log, r);
+          case ScalarKind::Float: return events_in<float>(log, r, out);
           case ScalarKind::LongDouble:
-          case ScalarKind::Float128: return events_in<long double>(log, r);
+          case ScalarKind::Float128: return events_in<long double>(log, r, out);
           case ScalarKind::Double: break;
         }
-        return events_in<double>(log, r);
+        return events_in<double>(log, r, out);
       },
       py::arg("log"), py::arg("t0"), py::arg("t1"), py::arg("first"), py::arg("last"), py::arg("positions"),
-      py::arg("before"), py::arg("impulse"), py::arg("collision"));
+      py::arg("before"), py::arg("impulse"), py::arg("collision"), py::arg("out") = py::none());
   // For the benchmark: the library's own Log::for_each_event over the whole log with a callback that
   // does nothing (events per second): the ceiling of any binding built on it.
   m.def("_time_for_each_event", [](const Log& log) {

@@ -93,6 +93,28 @@ def test_events_by_index_and_all_events(gas_log):
     assert np.all(np.diff(every["time"]) >= 0)
 
 
+def test_events_into_a_reused_array_window_by_window(gas_log):
+    log = ede.open(gas_log)
+    every = log.events(before=True)
+    window = 250
+    buf = log.events(first=0, last=window, before=True)
+    address = buf.__array_interface__["data"][0]
+    pieces = []
+    for first in range(0, len(every), window):
+        rows = log.events(first=first, last=first + window, before=True, out=buf)
+        assert rows.__array_interface__["data"][0] == address  # written into buf, not a new array
+        pieces.append(rows.copy())
+    np.testing.assert_array_equal(np.concatenate(pieces), every)
+    with pytest.raises(ValueError, match="holds 500 events, the array 250 rows"):
+        log.events(first=0, last=500, before=True, out=buf)
+    with pytest.raises(TypeError, match="is not the one these arguments give"):
+        log.events(first=0, last=10, out=buf)  # buf has the velocities before; these rows do not
+    with pytest.raises(TypeError, match="expected a numpy array"):
+        log.events(first=0, last=10, out=[1, 2, 3])
+    with pytest.raises(ValueError, match="contiguous 1-D"):
+        log.events(first=0, last=10, before=True, out=buf[::2])
+
+
 def test_impulses_conserve_momentum_in_pair_collisions(gas_log):
     log = ede.open(gas_log)
     ev = log.events(impulse=True, before=True)
