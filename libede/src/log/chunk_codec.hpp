@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "log/byte_columns.hpp"
+#include "log/id_lookahead.hpp"
 #include "core/event.hpp"
 #include "core/particles.hpp"
 #include "ede/error.hpp"
@@ -157,7 +158,7 @@ class ChunkEncoder {
       add_ids(e);
     add_time_v2(e.time, predicted_event_time(physics_, s, e.kind, e.i, e.j));
     if (e.kind == EventKind::Pair) {
-      T v[4], w[2];
+      T v[4], w[2] = {};  // w: rough runs only (GCC cannot see that the omega tests agree)
       predict_pair_velocities(physics_, s, e.i, e.j, e.time, tc, v, w);
       residuals_.varint(residual(e.vix, v[0]));
       residuals_.varint(residual(e.viy, v[1]));
@@ -165,7 +166,7 @@ class ChunkEncoder {
       residuals_.varint(residual(e.vjy, v[3]));
       if (!s.omega.empty()) spins_.varint(residual(e.wi, w[0])), spins_.varint(residual(e.wj, w[1]));
     } else if (e.kind == EventKind::Wall) {
-      T v[2], w[1];
+      T v[2], w[1] = {};
       predict_wall_velocity(physics_, s, e.i, e.j, e.time, tc, v, w);
       residuals_.varint(residual(e.vix, v[0]));
       residuals_.varint(residual(e.viy, v[1]));
@@ -323,6 +324,7 @@ class ChunkDecoder {
   std::uint32_t encoding_;
   EventPhysics<T> physics_;
   bool gravity_;  // the header's gravity is not zero: decode takes the general pair path
+  IdLookahead lookahead_;  // prefetches the records of the events ahead (large N only)
   std::string error_;
 };
 
