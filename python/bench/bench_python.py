@@ -4,13 +4,15 @@
   state   the state of N disks at an arbitrary time into numpy (ede.open(p).state(t)) against the
           library's own Log::state_at for the same state (timed inside C++, no Python), both on a freshly
           opened log: medians of interleaved repeats, and their ratio (target: <= 1.5)
-  events  every event of the log into a numpy structured array (log.events()), events per second
-          (target: >= 1e7), and with positions and velocities before (the wide rows)
+  events  every event of a log into a numpy structured array (log.events()), events per second
+          (target: >= 1e7): narrow rows, wide rows (positions and velocities before), and window by window
+          into one reused array (out=); on the N-disk log above and on a long log of --events-disks disks
+          (default 10^4, 2e6 events), where the walk, not loading the first keyframe, is what is timed
   memory  peak RSS of this process
 
-usage: bench_python.py [--disks N] [--collisions C] [--repeat R] [--log PATH] [--keep]
-The log is written by ede.run from examples/bench/gas-N1000000-phi0.5-periodic.toml with the number of
-disks and the length overridden (default: 10^6 disks, 2 collisions per disk).
+usage: bench_python.py [--disks N] [--collisions C] [--events-disks M] [--repeat R] [--log PATH] [--keep]
+The logs are written by ede.run from examples/bench/gas-N1000000-phi0.5-periodic.toml with the number of
+disks and the length overridden (default: 10^6 disks, 2 collisions per disk; 10^4 disks, 400 per disk: 2e6 events).
 """
 import argparse
 import os
@@ -36,10 +38,37 @@ def median_time(f, repeat):
     return statistics.median(out)
 
 
+def write_log(path, disks, collisions):
+    scene = ROOT / "examples" / "bench" / "gas-N1000000-phi0.5-periodic.toml"
+    t0 = time.perf_counter()
+    s = ede.run(scene, log=path, progress=False,
+                set={"species[0].count": disks, "stop.collisions_per_particle": collisions})
+    print("log: %s, %d disks, %d events, written in %.1f s" % (path, s["disks"], s["events"],
+                                                             time.perf_counter() - t0))
+
+
+def event_rates(log, repeat):
+    """Events per second: whole log narrow, wide, and in windows of 2^20 rows into one reused array."""
+    n = log.info["events"]
+    window = 1 << 20
+    buf = log.events(first=0, last=window)
+
+    def windows():
+        for first in range(0, n, window):
+            log.events(first=first, last=first + window, out=buf)
+
+    narrow = n / median_time(lambda: log.events(), repeat)
+    wide = n / median_time(lambda: log.events(positions=True, before=True), max(1, repeat // 2))
+    reused = n / median_time(windows, repeat)
+    return narrow, wide, reused
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--disks", type=int, default=1_000_000)
     ap.add_argument("--collisions", type=float, default=2.0)
+    ap.add_argument("--events-disks", type=int, default=10_000)
+    ap.add_argument("--events-collisions", type=float, default=400.0)
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--log", type=pathlib.Path)
     ap.add_argument("--keep", action="store_true", help="keep the log written")
@@ -51,14 +80,13 @@ def main():
         if path is None:
             tmp = tempfile.TemporaryDirectory()
             path = pathlib.Path(tmp.name) / "bench.ede"
-        scene = ROOT / "examples" / "bench" / "gas-N1000000-phi0.5-periodic.toml"
-        t0 = time.perf_counter()
-        s = ede.run(scene, log=path, progress=False,
-                    set={"species[0].count": a.disks, "stop.collisions_per_particle": a.collisions})
-        print("log: %s, %d disks, %d events, written in %.1f s" % (path, s["disks"], s["events"],
-                                                                 time.perf_counter() - t0))
+        write_log(path, a.disks, a.collisions)
     log = ede.open(path)
     info = log.info
+    long_tmp = tempfile.TemporaryDirectory()
+    long_path = pathlib.Path(long_tmp.name) / "events.ede"
+    write_log(long_path, a.events_disks, a.events_collisions)
+    long_log = ede.open(long_path)
     t = info["start_time"] + 0.618 * (info["end_time"] - info["start_time"])  # an arbitrary time
 
     cpp, py = [], []
@@ -77,13 +105,14 @@ def main():
     print("| state at t = %.6g: C++ Log::state_at (median of %d) | %.1f ms |" % (t, a.repeat, 1e3 * c))
     print("| state at t: Python log.state(t) into numpy | %.1f ms |" % (1e3 * p))
     print("| ratio Python / C++ (target <= 1.5) | %.2f |" % (p / c))
-    n = info["events"]
-    e = median_time(lambda: log.events(), a.repeat)
-    w = median_time(lambda: log.events(positions=True, before=True), max(1, a.repeat // 2))
-    ceiling = statistics.median(_ede._time_for_each_event(log._log) for _ in range(a.repeat))
-    print("| C++ Log::for_each_event over every event, callback doing nothing | %.3g events/s |" % ceiling)
-    print("| events into numpy, narrow rows (target >= 1e7/s) | %.3g events/s |" % (n / e))
-    print("| events into numpy, with positions and velocities before | %.3g events/s |" % (n / w))
+    for name, lg in (("%d disks, %d events" % (info["disks"], info["events"]), log),
+                     ("%d disks, %d events" % (long_log.info["disks"], long_log.info["events"]), long_log)):
+        ceiling = statistics.median(_ede._time_for_each_event(lg._log) for _ in range(a.repeat))
+        narrow, wide, reused = event_rates(lg, a.repeat)
+        print("| %s: C++ Log::for_each_event, callback doing nothing (one thread) | %.3g events/s |" % (name, ceiling))
+        print("| %s: events into numpy, narrow rows (target >= 1e7/s) | %.3g events/s |" % (name, narrow))
+        print("| %s: the same in windows of 2^20 rows into one reused array (out=) | %.3g events/s |" % (name, reused))
+        print("| %s: events with positions and velocities before | %.3g events/s |" % (name, wide))
     rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
     print("| peak RSS of this process | %.0f MB (%.0f B/disk) |" % (rss / 1e6, rss / info["disks"]))
     if a.keep and tmp is not None:
