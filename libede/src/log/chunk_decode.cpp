@@ -150,8 +150,10 @@ bool ChunkDecoder<T>::read_ids(DecodedEvent<T>& e) {
       u128 zj;
       if (!read_disk(disks_, e.i)) return false;
       if (!partners_.varint(zj, 33)) return fail("a pair partner is cut short or out of range");  // zigzag of an int32 difference
-      const i128 j = i128(e.i) + unzigzag(zj);
-      if (j < 0 || j >= i128(disks_count_) || j == e.i) return fail("a pair partner id is out of range");
+      // zj < 2^33 (checked by the read), so 64-bit arithmetic is exact (i128 cost ~25 instructions per event).
+      const std::uint64_t z = std::uint64_t(zj);
+      const std::int64_t j = std::int64_t(e.i) + (std::int64_t(z >> 1) ^ -std::int64_t(z & 1));
+      if (j < 0 || std::uint64_t(j) >= disks_count_ || j == e.i) return fail("a pair partner id is out of range");
       e.j = std::int32_t(j);
       return true;
     }
