@@ -20,6 +20,7 @@
 #include "log/chunk_codec.hpp"
 #include "ede_log.capnp.h"
 #include "log/log_framing.hpp"
+#include "log/flat_message.hpp"
 #include "log/record_writer.hpp"
 #include "log/scalar_bytes.hpp"
 #include "scene/scene_label.hpp"
@@ -40,7 +41,7 @@ logschema::ScalarType schema_scalar() {
 // its schema's full size, null pointers included: so such a run's records keep their bytes. Rough runs
 // build the full struct, rotation fields included. Readers see absent fields as empty either way.
 template <class S>
-typename S::Builder init_record(capnp::MallocMessageBuilder& message, bool full, std::uint16_t data_words,
+typename S::Builder init_record(capnp::MessageBuilder& message, bool full, std::uint16_t data_words,
                                 std::uint16_t pointers) {
   if (full) return message.initRoot<S>();
   return message.getRoot<capnp::AnyPointer>().initAsAnyStruct(data_words, pointers).template as<S>();
@@ -56,22 +57,28 @@ static_assert(capnp::_::structSize<logschema::Chunk>().data == kChunkWords &&
 static_assert(capnp::_::structSize<logschema::Keyframe>().data == kKeyframeWords &&
               capnp::_::structSize<logschema::Keyframe>().pointers == kKeyframePointers + 1);
 
-std::vector<unsigned char> to_bytes(capnp::MessageBuilder& message) {
-  const kj::Array<capnp::word> words = capnp::messageToFlatArray(message);
-  const auto bytes = words.asBytes();
-  return std::vector<unsigned char>(bytes.begin(), bytes.end());
+// Words of a record's root struct, pointer included (init_record's sizes, or the schema's).
+template <class S>
+constexpr std::size_t root_words(bool full, std::uint16_t data_words, std::uint16_t pointers) {
+  return 1 + (full ? std::size_t(capnp::_::structSize<S>().data) + capnp::_::structSize<S>().pointers
+                   : std::size_t(data_words) + pointers);
 }
 
 void set_data(capnp::Data::Builder out, const std::vector<unsigned char>& bytes) {
   if (!bytes.empty()) std::memcpy(out.begin(), bytes.data(), bytes.size());
 }
 
-// A per-disk column of scalars, byte-plane shuffled (positions and velocities share their high bytes).
+// A per-disk column of scalars, byte-plane shuffled (positions and velocities share their high bytes):
+// byte b of value i at out[b * n + i], shuffle_bytes' layout, written straight into the message's Data
+// (no raw and shuffled copies next to the message being built).
 template <class T, class F>
-std::vector<unsigned char> scalar_column(std::size_t n, F value_of) {
-  std::vector<unsigned char> raw(n * kScalarWidth<T>);
-  for (std::size_t i = 0; i < n; ++i) scalar_to_bytes<T>(value_of(i), raw.data() + i * kScalarWidth<T>);
-  return shuffle_bytes(raw, kScalarWidth<T>);
+void set_scalar_column(capnp::Data::Builder out, std::size_t n, F value_of) {
+  unsigned char* const o = out.begin();
+  for (std::size_t i = 0; i < n; ++i) {
+    unsigned char b[kScalarWidth<T>];
+    scalar_to_bytes<T>(value_of(i), b);
+    for (std::size_t k = 0; k < kScalarWidth<T>; ++k) o[k * n + i] = b[k];
+  }
 }
 
 template <class T>
@@ -150,21 +157,26 @@ void LogRunInfo::set_restitution(const PhysicsSpec& physics) {
 // worker only, once the first chunk is submitted.
 template <class T>
 struct ChunkCoder {
-  std::vector<T> mass;
   EventPhysics<T> physics;
   std::uint32_t format_version = 2;
-  ChunkEncoder<T> chunk{mass, format_version, physics};
+  // Version 2: what the predictors read (disks, mass, species; omega and inertia in rough runs), not the
+  // TC times; version 1: the masses only. The encoder reads the masses from here (one copy, not two).
   Particles<T> replayed;
+  ChunkEncoder<T> chunk{replayed.mass, format_version, physics};
   std::uint32_t run_id = 0;  // the header's (log/run_id.hpp), repeated in every chunk
   bool rotation = false;     // rough run: chunks carry the spin column
 
   explicit ChunkCoder(std::uint32_t version) : format_version(version) {}
 
-  std::vector<unsigned char> code(std::uint64_t first_event, const std::vector<EventOutcome<T>>& events) {
+  FlatMessage code(std::uint64_t first_event, const std::vector<EventOutcome<T>>& events) {
     chunk.reset(first_event);
     for (const EventOutcome<T>& e : events) add_event(e);
     const ChunkColumns c = chunk.columns();
-    capnp::MallocMessageBuilder message;
+    FlatMessageBuilder message(root_words<logschema::Chunk>(rotation, kChunkWords, kChunkPointers) +
+                              message_words_of(c.times.size()) + message_words_of(c.kinds.size()) +
+                              message_words_of(c.disks.size()) + message_words_of(c.partners.size()) +
+                              message_words_of(c.raw.size()) + message_words_of(c.residuals.size()) +
+                              message_words_of(c.spins.size()));
     auto b = init_record<logschema::Chunk>(message, rotation, kChunkWords, kChunkPointers);
     b.setFirstEvent(first_event);
     b.setCount(chunk.count());
@@ -176,7 +188,7 @@ struct ChunkCoder {
     set_data(b.initVelocitiesRaw(std::uint32_t(c.raw.size())), c.raw);
     set_data(b.initVelocityResiduals(std::uint32_t(c.residuals.size())), c.residuals);
     if (rotation) set_data(b.initSpinResiduals(std::uint32_t(c.spins.size())), c.spins);
-    return to_bytes(message);
+    return message.finish();
   }
 
   void add_event(const EventOutcome<T>& e) {
@@ -225,7 +237,7 @@ struct LogWriter<T>::Impl {
     if (settings.keyframe_interval == 0) settings.keyframe_interval = auto_keyframe_interval(p.size());
     if (coder_ready) return;
     coder_ready = true;
-    coder.mass = p.mass;
+    coder.replayed.mass = p.mass;
     EventPhysics<T>& physics = coder.physics;
     physics = EventPhysics<T>::box(run.lx, run.ly, run.boundary == BoundaryKind::Periodic, T(run.gx), T(run.gy));
     physics.species = std::max<std::size_t>(run.species_names.size(), 1);
@@ -247,7 +259,11 @@ struct LogWriter<T>::Impl {
       physics.wall_one_plus_beta = T(1) + T(run.wall_roughness);
     }
     if (settings.format_version < 2) return;
-    coder.replayed = p;
+    coder.replayed.disk = p.disk;
+    coder.replayed.species = p.species;
+    coder.replayed.omega = p.omega;
+    coder.replayed.inertia = p.inertia;
+    coder.replayed.gx = p.gx, coder.replayed.gy = p.gy;
     if (!resume_omega.empty()) coder.replayed.omega = resume_omega;
     resume_omega.clear();
     for (std::size_t i = 0; i < resume_disks.size() && i < coder.replayed.size(); ++i) {
@@ -259,7 +275,14 @@ struct LogWriter<T>::Impl {
   }
 
   void write_header(const Particles<T>& p) {
-    capnp::MallocMessageBuilder message;
+    // Texts and the small tables are a guess (a short one only costs a copy); the per-disk columns exact.
+    const std::size_t n = p.size(), column = message_words_of(n * kScalarWidth<T>);
+    FlatMessageBuilder message(root_words<logschema::Header>(run.rotation, kHeaderWords, kHeaderPointers) + 256 +
+                              message_words_of(run.scene_text.size() + 1) + message_words_of(run.scene_name.size() + 1) +
+                              2 * run.species_names.size() + 3 * column + message_words_of(4 * n) +
+                              (run.rotation ? column : 0) +
+                              message_words_of(kScalarWidth<T> * (run.pair_restitution.size() + run.segments.size() +
+                                                                  2 * run.pair_roughness.size() + 8)));
     auto h = init_record<logschema::Header>(message, run.rotation, kHeaderWords, kHeaderPointers);
     h.setEngineVersion(run.engine_version.empty() ? std::string(EDE_VERSION) : run.engine_version);
     h.setCompiler(run.compiler.empty() ? build_compiler() : run.compiler);
@@ -277,10 +300,8 @@ struct LogWriter<T>::Impl {
     h.setChunkEvents(settings.chunk_events);
     h.setKeyframeInterval(settings.keyframe_interval);
     h.setRebuildInterval(run.rebuild_interval);
-    set_data(h.initRadius(std::uint32_t(p.size() * kScalarWidth<T>)),
-             scalar_column<T>(p.size(), [&](std::size_t i) { return p.disk[i].r; }));
-    set_data(h.initMass(std::uint32_t(p.size() * kScalarWidth<T>)),
-             scalar_column<T>(p.size(), [&](std::size_t i) { return p.mass[i]; }));
+    set_scalar_column<T>(h.initRadius(std::uint32_t(n * kScalarWidth<T>)), n, [&](std::size_t i) { return p.disk[i].r; });
+    set_scalar_column<T>(h.initMass(std::uint32_t(n * kScalarWidth<T>)), n, [&](std::size_t i) { return p.mass[i]; });
     auto species = h.initSpecies(std::uint32_t(p.size()));
     for (std::size_t i = 0; i < p.size(); ++i) species.set(std::uint32_t(i), std::uint32_t(p.species[i]));
     h.setInitialEnergy(kinetic_energy(p));
@@ -296,8 +317,8 @@ struct LogWriter<T>::Impl {
       for (const double v : run.segments) walls.push_back(T(v));
       set_data(h.initWallRestitution(std::uint32_t(walls.size() * kScalarWidth<T>)), raw_scalars(walls));
       if (run.rotation) {
-        set_data(h.initInertia(std::uint32_t(p.size() * kScalarWidth<T>)),
-                 scalar_column<T>(p.size(), [&](std::size_t i) { return p.inertia[i]; }));
+        set_scalar_column<T>(h.initInertia(std::uint32_t(n * kScalarWidth<T>)), n,
+                             [&](std::size_t i) { return p.inertia[i]; });
         std::vector<T> beta = physics.one_plus_beta;
         beta.insert(beta.end(), 4, physics.wall_one_plus_beta);
         set_data(h.initOnePlusBeta(std::uint32_t(beta.size() * kScalarWidth<T>)), raw_scalars(beta));
@@ -309,7 +330,7 @@ struct LogWriter<T>::Impl {
     h.setRunId(run_id);
     logfmt::RecordHeader rh;
     rh.kind = logfmt::RecordKind::Header;
-    out.submit(rh, to_bytes(message));
+    out.submit(rh, message.finish());
   }
 
   void flush_chunk() {
@@ -332,29 +353,43 @@ struct LogWriter<T>::Impl {
   void write_keyframe(const Particles<T>& p, T time, const RebuildPoint<T>* rebuild) {
     flush_chunk();
     const std::size_t n = p.size();
-    capnp::MallocMessageBuilder message;
+    FlatMessageBuilder message(keyframe_words(n, rebuild));
     auto k = init_record<logschema::Keyframe>(message, run.rotation, kKeyframeWords, kKeyframePointers);
     k.setEventsBefore(logged);
     k.setRunId(run_id);
     set_data(k.initTime(kScalarWidth<T>), one_scalar(time));
     k.setResumable(rebuild != nullptr);
-    const auto column = [&](auto value_of) { return scalar_column<T>(n, value_of); };
     const std::uint32_t bytes_per_column = std::uint32_t(n * kScalarWidth<T>);
-    set_data(k.initX(bytes_per_column), column([&](std::size_t i) { return p.disk[i].x; }));
-    set_data(k.initY(bytes_per_column), column([&](std::size_t i) { return p.disk[i].y; }));
-    set_data(k.initVx(bytes_per_column), column([&](std::size_t i) { return p.disk[i].vx; }));
-    set_data(k.initVy(bytes_per_column), column([&](std::size_t i) { return p.disk[i].vy; }));
-    set_data(k.initT(bytes_per_column), column([&](std::size_t i) { return p.disk[i].t; }));
-    if (run.rotation) set_data(k.initOmega(bytes_per_column), column([&](std::size_t i) { return p.omega[i]; }));
+    const auto column = [&](capnp::Data::Builder out, auto value_of) { set_scalar_column<T>(out, n, value_of); };
+    column(k.initX(bytes_per_column), [&](std::size_t i) { return p.disk[i].x; });
+    column(k.initY(bytes_per_column), [&](std::size_t i) { return p.disk[i].y; });
+    column(k.initVx(bytes_per_column), [&](std::size_t i) { return p.disk[i].vx; });
+    column(k.initVy(bytes_per_column), [&](std::size_t i) { return p.disk[i].vy; });
+    column(k.initT(bytes_per_column), [&](std::size_t i) { return p.disk[i].t; });
+    if (run.rotation) column(k.initOmega(bytes_per_column), [&](std::size_t i) { return p.omega[i]; });
     if (rebuild) write_resume_fields(k, *rebuild);
     logfmt::RecordHeader rh;
     rh.kind = logfmt::RecordKind::Keyframe;
     rh.first_event = logged;
     rh.time_first = rh.time_last = double(time);
     rh.resumable = rebuild != nullptr;
-    const std::size_t seq = out.submit(rh, to_bytes(message));
+    const std::size_t seq = out.submit(rh, message.finish());
     pending.push_back({seq, {std::uint8_t(logfmt::RecordKind::Keyframe), 0, logged, 0, rh.time_first,
                              rh.time_last, rh.resumable}});
+  }
+
+  // The words of a keyframe's message, exactly (write_keyframe, write_resume_fields), so that it is built in
+  // one segment and handed to the record writer without a copy.
+  std::size_t keyframe_words(std::size_t n, const RebuildPoint<T>* rebuild) const {
+    const std::size_t column = message_words_of(n * kScalarWidth<T>);
+    std::size_t words = root_words<logschema::Keyframe>(run.rotation, kKeyframeWords, kKeyframePointers) +
+                        message_words_of(kScalarWidth<T>) + (run.rotation ? 6 : 5) * column;
+    if (rebuild) {
+      words += message_words_of(4 * n);
+      if (!rebuild->particles.last_collision.empty()) words += column;
+      words += kCountedKindsV2 + 3;
+    }
+    return words;
   }
 
   void write_resume_fields(logschema::Keyframe::Builder k, const RebuildPoint<T>& r) {
@@ -362,8 +397,8 @@ struct LogWriter<T>::Impl {
     auto partners = k.initLastPartner(std::uint32_t(p.size()));
     for (std::size_t i = 0; i < p.size(); ++i) partners.set(std::uint32_t(i), p.disk[i].last_partner);
     if (!p.last_collision.empty())
-      set_data(k.initLastCollision(std::uint32_t(p.size() * kScalarWidth<T>)),
-               scalar_column<T>(p.size(), [&](std::size_t i) { return p.last_collision[i]; }));
+      set_scalar_column<T>(k.initLastCollision(std::uint32_t(p.size() * kScalarWidth<T>)), p.size(),
+                           [&](std::size_t i) { return p.last_collision[i]; });
     // The six kinds before segments, stale, tc_elastic; then segment events only in runs with segments
     // (FORMAT.md), so the keyframes of every other run keep their bytes.
     const bool segments = !run.segments.empty();
@@ -385,7 +420,8 @@ struct LogWriter<T>::Impl {
       e.offset = out.offset_of(p.sequence);
       entries.push_back(e);
     }
-    capnp::MallocMessageBuilder message;
+    FlatMessageBuilder message(64 + entries.size() * (capnp::_::structSize<logschema::Index::Entry>().data + capnp::_::structSize<logschema::Index::Entry>().pointers) +
+                              message_words_of(std::string(to_string(status)).size() + 1));
     auto idx = message.initRoot<logschema::Index>();
     auto list = idx.initEntries(std::uint32_t(entries.size()));
     for (std::size_t k = 0; k < entries.size(); ++k) {
@@ -405,7 +441,7 @@ struct LogWriter<T>::Impl {
     rh.kind = logfmt::RecordKind::Index;
     rh.first_event = logged;
     rh.time_first = rh.time_last = double(final_time);
-    const std::size_t seq = out.submit(rh, to_bytes(message));
+    const std::size_t seq = out.submit(rh, message.finish());
     out.flush();
     logfmt::Trailer trailer{out.offset_of(seq), out.end_offset()};
     std::vector<unsigned char> bytes(logfmt::kTrailerSize);

@@ -9,6 +9,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <memory>
 #include <new>
 
 namespace ede {
@@ -76,14 +77,14 @@ RecordWriter::~RecordWriter() { finish(); }
 void RecordWriter::write_raw(std::vector<unsigned char> bytes) {
   std::unique_lock lock(mutex_);
   idle_.wait(lock, [&] { return queue_.size() < kMaxQueued; });
-  queue_.push_back(Job{true, {}, std::move(bytes), {}});
+  queue_.push_back(Job{true, {}, std::move(bytes), {}, {}});
   wake_.notify_one();
 }
 
-std::size_t RecordWriter::submit(logfmt::RecordHeader header, std::vector<unsigned char> content) {
+std::size_t RecordWriter::submit(logfmt::RecordHeader header, FlatMessage content) {
   std::unique_lock lock(mutex_);
   idle_.wait(lock, [&] { return queue_.size() < kMaxQueued; });
-  queue_.push_back(Job{false, header, std::move(content), {}});
+  queue_.push_back(Job{false, header, {}, std::move(content), {}});
   wake_.notify_one();
   return submitted_++;
 }
@@ -91,7 +92,7 @@ std::size_t RecordWriter::submit(logfmt::RecordHeader header, std::vector<unsign
 std::size_t RecordWriter::submit_built(logfmt::RecordHeader header, Builder build) {
   std::unique_lock lock(mutex_);
   idle_.wait(lock, [&] { return queue_.size() < kMaxQueued; });
-  queue_.push_back(Job{false, header, {}, std::move(build)});
+  queue_.push_back(Job{false, header, {}, {}, std::move(build)});
   wake_.notify_one();
   return submitted_++;
 }
@@ -155,7 +156,7 @@ void RecordWriter::work() {
         problem = write_job(job);
       } catch (const std::bad_alloc&) {
         problem = "out of memory while compressing a record of '" + path_ + "' (" +
-                  std::to_string(job.bytes.size()) + " bytes)";
+                  std::to_string(job.content.size()) + " bytes)";
       }
     {
       std::lock_guard lock(mutex_);
@@ -175,17 +176,20 @@ std::string RecordWriter::write_job(Job& job) {
     return e.empty() ? e : "writing '" + path_ + "': " + e;
   }
   if (job.build) {
-    job.bytes = job.build();
+    job.content = job.build();
     job.build = nullptr;  // frees the chunk's events now
   }
   auto* cctx = static_cast<ZSTD_CCtx*>(zstd_context_);
-  std::vector<unsigned char> out(logfmt::kRecordHeaderSize + ZSTD_compressBound(job.bytes.size()));
-  const std::size_t n = ZSTD_compress2(cctx, out.data() + logfmt::kRecordHeaderSize, out.size() - logfmt::kRecordHeaderSize,
-                                       job.bytes.data(), job.bytes.size());
+  const std::size_t size = job.content.size();
+  const std::size_t bound = logfmt::kRecordHeaderSize + ZSTD_compressBound(size);
+  const std::unique_ptr<unsigned char[]> out(new unsigned char[bound]);  // not zero-filled: see the header
+  const std::size_t n = ZSTD_compress2(cctx, out.get() + logfmt::kRecordHeaderSize, bound - logfmt::kRecordHeaderSize,
+                                       job.content.data(), size);
+  job.content.release();  // freed before the write
   if (ZSTD_isError(n)) return std::string("compressing a log record: ") + ZSTD_getErrorName(n);
   job.header.payload_size = n;
-  logfmt::encode_record_header(job.header, out.data());
-  const std::string e = write_all(fd_, out.data(), logfmt::kRecordHeaderSize + n);
+  logfmt::encode_record_header(job.header, out.get());
+  const std::string e = write_all(fd_, out.get(), logfmt::kRecordHeaderSize + n);
   offset_ += logfmt::kRecordHeaderSize + n;
   if (!e.empty()) return "writing '" + path_ + "': " + e;
   // A resumable keyframe is where ede-sim --resume restarts: make it durable (a kill needs no sync, the

@@ -13,6 +13,9 @@
 // file is fsync'ed before close; every write, sync and close is checked and its error names the file.
 // Rejected: write-to-temporary-then-rename for the log: ede-sim --resume continues the log in place, so a
 // killed run's records must be at the path the user gave (a temporary would hide them under another name).
+// A record's content is a flat Cap'n Proto message (FlatMessage: log/flat_message.hpp), moved in, never copied; the compressed
+// output buffer is not zero-filled, so only the pages zstd writes are touched (a keyframe at N = 10^6 would
+// otherwise touch its whole compress bound, ~45 MB), and the content is freed before the write.
 // Rejected: compressing on the simulation thread (measured: zstd at level 3 costs as much per event as
 // the simulation at small N) and zstd's own multi-threading (its output depends on the job split).
 #pragma once
@@ -27,6 +30,7 @@
 #include <vector>
 
 #include "log/log_framing.hpp"
+#include "log/flat_message.hpp"
 
 namespace ede {
 
@@ -43,10 +47,10 @@ class RecordWriter {
   void write_raw(std::vector<unsigned char> bytes);
   // Queues a record; `header.payload_size` is filled in by the worker. Returns the record's sequence
   // number (0, 1, ... in submission order); its file offset is known once flush() returned.
-  std::size_t submit(logfmt::RecordHeader header, std::vector<unsigned char> content);
+  std::size_t submit(logfmt::RecordHeader header, FlatMessage content);
   // Queues a record whose content `build` makes on the worker, after every record submitted before it
   // was built (so a builder may keep state from one call to the next: it runs in submission order).
-  using Builder = std::function<std::vector<unsigned char>()>;
+  using Builder = std::function<FlatMessage()>;
   std::size_t submit_built(logfmt::RecordHeader header, Builder build);
   // Waits until everything submitted is on disk.
   void flush();
@@ -61,8 +65,9 @@ class RecordWriter {
   struct Job {
     bool raw;
     logfmt::RecordHeader header;
-    std::vector<unsigned char> bytes;
-    Builder build;  // when set, makes `bytes` on the worker
+    std::vector<unsigned char> bytes;  // raw
+    FlatMessage content;               // a record's
+    Builder build;  // when set, makes `content` on the worker
   };
   void work();
   std::string write_job(Job& job);
