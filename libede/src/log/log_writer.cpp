@@ -207,8 +207,8 @@ struct LogWriter<T>::Impl {
   LogRunInfo run;
   LogSettings settings;
   RecordWriter out;
-  ChunkCoder<T> coder{settings.format_version};  // the worker's, once set up (coder_ready)
-  bool coder_ready = false;
+  ChunkCoder<T> coder{settings.format_version};  // the worker's, once set up (coder_ready, state_ready)
+  bool coder_ready = false, state_ready = false;
   std::vector<Disk<T>> resume_disks;
   std::vector<T> resume_omega;
   // The open chunk, on the event loop: its events as the engine reported them.
@@ -232,10 +232,19 @@ struct LogWriter<T>::Impl {
 
   // What needs the disks: the masses and physics (predictions), the replayed state before the first event
   // (the initial state, or a resumed run's keyframe records), and the automatic keyframe interval. Runs on
-  // the event loop before the first chunk is submitted, so before the worker touches the coder.
-  void ensure_coder(const Particles<T>& p) {
+  // the event loop before the first chunk is submitted, so before the worker touches the coder. The
+  // replayed state (`with_state`) is copied after the header is written (on_start): the header's run id
+  // makes transient copies of the header (run_id.cpp), which then do not coincide with this copy.
+  void ensure_coder(const Particles<T>& p, bool with_state = true) {
     if (settings.keyframe_interval == 0) settings.keyframe_interval = auto_keyframe_interval(p.size());
-    if (coder_ready) return;
+    if (!coder_ready) setup_coder(p);
+    if (with_state && !state_ready) {
+      state_ready = true;
+      copy_state(p);
+    }
+  }
+
+  void setup_coder(const Particles<T>& p) {
     coder_ready = true;
     coder.replayed.mass = p.mass;
     EventPhysics<T>& physics = coder.physics;
@@ -258,6 +267,9 @@ struct LogWriter<T>::Impl {
                                    physics.one_plus_beta.empty() ? T(0) : physics.one_plus_beta[0]);
       physics.wall_one_plus_beta = T(1) + T(run.wall_roughness);
     }
+  }
+
+  void copy_state(const Particles<T>& p) {
     if (settings.format_version < 2) return;
     coder.replayed.disk = p.disk;
     coder.replayed.species = p.species;
@@ -492,8 +504,9 @@ LogWriter<T>::~LogWriter() = default;
 
 template <class T>
 void LogWriter<T>::on_start(T, const Particles<T>& p) {
-  impl_->ensure_coder(p);
+  impl_->ensure_coder(p, false);
   impl_->write_header(p);
+  impl_->ensure_coder(p);
 }
 
 template <class T>
