@@ -18,6 +18,7 @@
 
 #include "core/build_info.hpp"
 #include "log/chunk_codec.hpp"
+#include "log/coder_state.hpp"
 #include "ede_log.capnp.h"
 #include "log/log_framing.hpp"
 #include "log/flat_message.hpp"
@@ -159,10 +160,11 @@ template <class T>
 struct ChunkCoder {
   EventPhysics<T> physics;
   std::uint32_t format_version = 2;
-  // Version 2: what the predictors read (disks, mass, species; omega and inertia in rough runs), not the
-  // TC times; version 1: the masses only. The encoder reads the masses from here (one copy, not two).
-  Particles<T> replayed;
-  ChunkEncoder<T> chunk{replayed.mass, format_version, physics};
+  // Version 2: what the predictors read, in 40 bytes a disk (log/coder_state.hpp). Version 1: nothing;
+  // its encoder reads the masses (`v1_mass`, empty in version 2).
+  CoderState<T> replayed;
+  std::vector<T> v1_mass;
+  ChunkEncoder<T> chunk{v1_mass, format_version, physics};
   std::uint32_t run_id = 0;  // the header's (log/run_id.hpp), repeated in every chunk
   bool rotation = false;     // rough run: chunks carry the spin column
 
@@ -246,7 +248,7 @@ struct LogWriter<T>::Impl {
 
   void setup_coder(const Particles<T>& p) {
     coder_ready = true;
-    coder.replayed.mass = p.mass;
+    if (settings.format_version < 2) coder.v1_mass = p.mass;
     EventPhysics<T>& physics = coder.physics;
     physics = EventPhysics<T>::box(run.lx, run.ly, run.boundary == BoundaryKind::Periodic, T(run.gx), T(run.gy));
     physics.species = std::max<std::size_t>(run.species_names.size(), 1);
@@ -271,17 +273,12 @@ struct LogWriter<T>::Impl {
 
   void copy_state(const Particles<T>& p) {
     if (settings.format_version < 2) return;
-    coder.replayed.disk = p.disk;
-    coder.replayed.species = p.species;
-    coder.replayed.omega = p.omega;
-    coder.replayed.inertia = p.inertia;
-    coder.replayed.gx = p.gx, coder.replayed.gy = p.gy;
+    coder.replayed.assign(p);
     if (!resume_omega.empty()) coder.replayed.omega = resume_omega;
     resume_omega.clear();
     for (std::size_t i = 0; i < resume_disks.size() && i < coder.replayed.size(); ++i) {
-      Disk<T>& d = coder.replayed.disk[i];
       const Disk<T>& from = resume_disks[i];
-      d.x = from.x, d.y = from.y, d.vx = from.vx, d.vy = from.vy, d.t = from.t;
+      coder.replayed.motion[i] = {from.x, from.y, from.vx, from.vy, from.t};
     }
     resume_disks.clear();
   }
