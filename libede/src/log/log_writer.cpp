@@ -3,7 +3,8 @@
 // Chunk boundaries are a function of the event index alone (every chunk_events events, and at every
 // keyframe), so a resumed run cut at a keyframe writes exactly the chunks the uninterrupted run wrote.
 // The event loop only copies each event into the open chunk's buffer; the columns are coded on the record
-// writer's worker (Coder below), which keeps the replayed state that format version 2 predicts from. The
+// writer's worker (Coder below), which keeps the replayed state that format version 2 predicts from
+// (log/coder_state.hpp: x, y, vx, vy, t a disk, not a copy of the engine's records). The
 // worker builds records in submission order, so the coder sees the events in order and the bytes are
 // those of coding on the loop. Rejected: coding on the event loop (measured: at N = 1e4, log format 2's
 // predictions and the replayed state's updates took the logging overhead from 8-14 % to 34 %).
