@@ -30,7 +30,10 @@ FlatMessage FlatMessage::zeroed(std::size_t bytes) {
   bytes = std::max<std::size_t>(bytes, 8);
   if (bytes >= kMapAtLeast) {
     bytes = (bytes + kPage - 1) / kPage * kPage;
-    void* p = ::mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    // MAP_NORESERVE: the reservation's untouched part is address space only, so the kernel's overcommit
+    // heuristic does not count it against memory (under strict accounting the flag is ignored, and a
+    // refused reservation makes the builder retry smaller: FlatMessageBuilder's constructor).
+    void* p = ::mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
     if (p == MAP_FAILED) throw std::bad_alloc();
     m.base_ = p, m.mapped_ = true;
   } else {
@@ -73,8 +76,13 @@ void FlatMessage::release() {
 
 // MallocMessageBuilder's growth (GROW_HEURISTICALLY) at most doubles what was allocated, past the first
 // segment: four times the message plus the first segment and the table holds every segment it asks for.
-FlatMessageBuilder::FlatMessageBuilder(std::size_t words)
-    : buffer_(FlatMessage::zeroed(8 * (kTableWords + 2048 + 4 * words))) {}
+FlatMessageBuilder::FlatMessageBuilder(std::size_t words) {
+  try {
+    buffer_ = FlatMessage::zeroed(8 * (kTableWords + 2048 + 4 * words));
+  } catch (const std::bad_alloc&) {  // address space refused: the message itself, later segments spilled
+    buffer_ = FlatMessage::zeroed(8 * (kTableWords + 2048 + words));
+  }
+}
 
 FlatMessageBuilder::~FlatMessageBuilder() {
   for (void* p : spilled_) std::free(p);
