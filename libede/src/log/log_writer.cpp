@@ -154,6 +154,48 @@ void LogRunInfo::set_restitution(const PhysicsSpec& physics) {
     segments.insert(segments.end(), {s.from[0], s.from[1], s.to[0], s.to[1], s.restitution});
 }
 
+// An event as the open chunk keeps it until the worker codes it: what every coder reads (56 bytes for
+// double, the engine's EventOutcome is 104); the spins after a rough run's event and the velocities before
+// it that format version 1 codes against go to ChunkEvents::extra only in the runs that need them. Up to
+// six chunks of 16 384 events are alive at once (the open one, four queued, the worker's), so this is
+// ~5 MB less at any N (docs/performance.md, "Memory at 10⁶ with the log").
+template <class T>
+struct LoggedEvent {
+  T time, vix, viy, vjx, vjy;
+  std::int32_t i, j;
+  EventKind kind;
+  bool tc_elastic;
+};
+
+template <class T>
+struct ChunkEvents {
+  std::vector<LoggedEvent<T>> events;
+  std::vector<T> extra;  // per event: wi, wj (rough runs), then vix0, viy0, vjx0, vjy0 (format version 1)
+  bool spins = false, before = false;
+
+  std::size_t size() const { return events.size(); }
+  bool empty() const { return events.empty(); }
+  void reserve(std::size_t n) {
+    events.reserve(n);
+    extra.reserve(n * ((spins ? 2 : 0) + (before ? 4 : 0)));
+  }
+  void push_back(const EventOutcome<T>& e) {
+    events.push_back({e.time, e.vix, e.viy, e.vjx, e.vjy, e.i, e.j, e.kind, e.tc_elastic});
+    if (spins) extra.insert(extra.end(), {e.wi, e.wj});
+    if (before) extra.insert(extra.end(), {e.vix0, e.viy0, e.vjx0, e.vjy0});
+  }
+  EventOutcome<T> operator[](std::size_t k) const {
+    const LoggedEvent<T>& l = events[k];
+    EventOutcome<T> e;
+    e.time = l.time, e.kind = l.kind, e.tc_elastic = l.tc_elastic, e.i = l.i, e.j = l.j;
+    e.vix = l.vix, e.viy = l.viy, e.vjx = l.vjx, e.vjy = l.vjy;
+    const T* x = extra.data() + k * ((spins ? 2 : 0) + (before ? 4 : 0));
+    if (spins) e.wi = x[0], e.wj = x[1], x += 2;
+    if (before) e.vix0 = x[0], e.viy0 = x[1], e.vjx0 = x[2], e.vjy0 = x[3];
+    return e;
+  }
+};
+
 // What codes the columns: the encoder and, for version 2, the state as replay will have it before each
 // event, kept by applying each event with the same function replay uses. Touched by the record writer's
 // worker only, once the first chunk is submitted.
@@ -171,9 +213,9 @@ struct ChunkCoder {
 
   explicit ChunkCoder(std::uint32_t version) : format_version(version) {}
 
-  FlatMessage code(std::uint64_t first_event, const std::vector<EventOutcome<T>>& events) {
+  FlatMessage code(std::uint64_t first_event, const ChunkEvents<T>& events) {
     chunk.reset(first_event);
-    for (const EventOutcome<T>& e : events) add_event(e);
+    for (std::size_t k = 0; k < events.size(); ++k) add_event(events[k]);
     const ChunkColumns c = chunk.columns();
     FlatMessageBuilder message(root_words<logschema::Chunk>(rotation, kChunkWords, kChunkPointers) +
                               message_words_of(c.times.size()) + message_words_of(c.kinds.size()) +
@@ -215,7 +257,7 @@ struct LogWriter<T>::Impl {
   std::vector<Disk<T>> resume_disks;
   std::vector<T> resume_omega;
   // The open chunk, on the event loop: its events as the engine reported them.
-  std::vector<EventOutcome<T>> chunk_events;
+  ChunkEvents<T> chunk_events;
   std::uint64_t chunk_first = 0;
   std::uint64_t logged = 0;
   struct Pending {  // an index entry whose offset is known once the record is written
@@ -349,13 +391,13 @@ struct LogWriter<T>::Impl {
     rh.kind = logfmt::RecordKind::Chunk;
     rh.first_event = chunk_first;
     rh.event_count = chunk_events.size();
-    rh.time_first = double(chunk_events.front().time);
-    rh.time_last = double(chunk_events.back().time);
+    rh.time_first = double(chunk_events.events.front().time);
+    rh.time_last = double(chunk_events.events.back().time);
     const std::size_t seq = out.submit_built(
         rh, [coder = &coder, first = chunk_first, events = std::move(chunk_events)] { return coder->code(first, events); });
     pending.push_back({seq, {std::uint8_t(logfmt::RecordKind::Chunk), 0, rh.first_event, rh.event_count,
                              rh.time_first, rh.time_last, false}});
-    chunk_events = {};
+    chunk_events = {{}, {}, run.rotation, settings.format_version < 2};
     chunk_events.reserve(settings.chunk_events);
     chunk_first = logged;
   }
@@ -490,6 +532,8 @@ Result<std::unique_ptr<LogWriter<T>>> LogWriter<T>::create(const std::string& pa
   if (run.rotation && settings.format_version < 2)
     return Error{"log settings: a run of rough (rotating) disks is written in format version 2 only"};
   impl->chunk_first = impl->logged;
+  impl->chunk_events.spins = run.rotation;
+  impl->chunk_events.before = settings.format_version < 2;
   impl->chunk_events.reserve(settings.chunk_events);
   return std::unique_ptr<LogWriter<T>>(new LogWriter<T>(std::move(impl)));
 }
