@@ -73,14 +73,13 @@ constexpr std::uint32_t kLatestColumnEncoding = 2;
 constexpr int kCountedKindsV2 = 6;
 
 // The time a version 2 log predicts for an event from the state just before it (kNever: no prediction).
-template <class T>
-inline T predicted_event_time(const EventPhysics<T>& ph, const Particles<T>& s, EventKind kind, std::int32_t i,
-                              std::int32_t j) {
+template <class T, class S>
+inline T predicted_event_time(const EventPhysics<T>& ph, const S& s, EventKind kind, std::int32_t i, std::int32_t j) {
   switch (kind) {
     case EventKind::Pair: return predict_pair_time(ph, s, i, j);
-    case EventKind::Wall: return predict_wall_time(ph, s.disk[std::size_t(i)], j);
-    case EventKind::Wrap: return predict_wrap_time(ph, s.disk[std::size_t(i)], j);
-    case EventKind::Segment: return predict_segment_time(ph, s.disk[std::size_t(i)], j);
+    case EventKind::Wall: return predict_wall_time(ph, record_of(s, std::size_t(i)), j);
+    case EventKind::Wrap: return predict_wrap_time(ph, record_of(s, std::size_t(i)), j);
+    case EventKind::Segment: return predict_segment_time(ph, record_of(s, std::size_t(i)), j);
     default: return kNever<T>;
   }
 }
@@ -106,8 +105,10 @@ class ChunkEncoder {
     spins_.clear();
   }
 
-  // `before`: the state just before the event, as replay has it (encoding 2 only).
-  void add(const EventOutcome<T>& e, const Particles<T>& before) {
+  // `before`: the state just before the event, as replay has it (encoding 2 only): a Particles<T> or the
+  // writer's CoderState<T>.
+  template <class S>
+  void add(const EventOutcome<T>& e, const S& before) {
     if (encoding_ == 1)
       add_v1(e);
     else
@@ -146,7 +147,8 @@ class ChunkEncoder {
     }
   }
 
-  void add_v2(const EventOutcome<T>& e, const Particles<T>& s) {
+  template <class S>
+  void add_v2(const EventOutcome<T>& e, const S& s) {
     const bool collision = e.kind == EventKind::Pair || e.kind == EventKind::Wall || e.kind == EventKind::Segment;
     bool tc = collision && e.tc_elastic;
     // An event that does not say (a converted version 1 log) gets the flag when only the elastic rule
@@ -179,7 +181,8 @@ class ChunkEncoder {
     }
   }
 
-  bool rule_exact(const EventOutcome<T>& e, const Particles<T>& s, bool tc) const {
+  template <class S>
+  bool rule_exact(const EventOutcome<T>& e, const S& s, bool tc) const {
     T v[4];
     if (e.kind == EventKind::Pair) {
       predict_pair_velocities(physics_, s, e.i, e.j, e.time, tc, v);
@@ -350,12 +353,21 @@ inline bool finite_record(const Disk<T>& d) {
   return std::isfinite(double(d.x)) && std::isfinite(double(d.y)) && std::isfinite(double(d.t));
 }
 
+// The record of disk i to change: a reference into replay's Particles<T>; the writer's CoderState<T> has
+// its own overload (log/coder_state.hpp), a copy written back when it goes out of scope.
 template <class T>
-[[gnu::always_inline]] inline bool apply_event(const DecodedEvent<T>& e, Particles<T>& p, T lx, T ly) {
+[[gnu::always_inline]] inline Disk<T>& writable_record(Particles<T>& p, std::size_t i) {
+  return p.disk[i];
+}
+
+template <class T, class S>
+[[gnu::always_inline]] inline bool apply_event(const DecodedEvent<T>& e, S& p, T lx, T ly) {
   switch (e.kind) {
     case EventKind::Pair: {
-      Disk<T>& a = p.disk[std::size_t(e.i)];
-      Disk<T>& b = p.disk[std::size_t(e.j)];
+      auto&& ra = writable_record(p, std::size_t(e.i));
+      auto&& rb = writable_record(p, std::size_t(e.j));
+      Disk<T>& a = ra;
+      Disk<T>& b = rb;
       if (e.advanced) {
         a.x = e.xi, a.y = e.yi, a.t = e.time;
         b.x = e.xj, b.y = e.yj, b.t = e.time;
@@ -369,20 +381,24 @@ template <class T>
     }
     case EventKind::Wall:
     case EventKind::Segment: {
-      Disk<T>& a = p.disk[std::size_t(e.i)];
+      auto&& ra = writable_record(p, std::size_t(e.i));
+      Disk<T>& a = ra;
       advance_disk(a, e.time, p.gx, p.gy);
       a.vx = e.vix, a.vy = e.viy;
       if (!p.omega.empty() && e.kind == EventKind::Wall) p.omega[std::size_t(e.i)] = e.wi;
       return finite_record(a);
     }
     case EventKind::Wrap: {
-      Disk<T>& a = p.disk[std::size_t(e.i)];
+      auto&& ra = writable_record(p, std::size_t(e.i));
+      Disk<T>& a = ra;
       wrap_disk(a, e.time, e.j, lx, ly);
       return finite_record(a);
     }
     case EventKind::Action: {
       bool ok = true;
-      for (Disk<T>& d : p.disk) {
+      for (std::size_t i = 0; i < p.size(); ++i) {
+        auto&& r = writable_record(p, i);
+        Disk<T>& d = r;
         reverse_disk(d, e.time, p.gx, p.gy);
         ok = ok && finite_record(d);
       }

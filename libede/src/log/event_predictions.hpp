@@ -73,6 +73,22 @@ struct EventPhysics {
   }
 };
 
+// What the predictors read of a state: replay's Particles<T> through these (references into it, so replay's
+// code is what it was), the log writer's CoderState<T> (log/coder_state.hpp: x, y, vx, vy, t per disk)
+// through its own overloads, found by argument-dependent lookup when a predictor is instantiated.
+template <class T>
+[[gnu::always_inline]] inline const Disk<T>& record_of(const Particles<T>& p, std::size_t i) {
+  return p.disk[i];
+}
+template <class T>
+[[gnu::always_inline]] inline T mass_of(const Particles<T>& p, std::size_t i) {
+  return p.mass[i];
+}
+template <class T>
+[[gnu::always_inline]] inline std::int32_t species_of(const Particles<T>& p, std::size_t i) {
+  return p.species[i];
+}
+
 // Post-collision velocities of pair (i, j) at time t, as Engine::resolve_pair computes them: both records
 // brought to t, the separation with the nearest periodic image, the collision rule with 1 + xi of the
 // pair (2 when the TC model made it elastic). `a` and `b` are the records of i and j already brought to t
@@ -80,31 +96,30 @@ struct EventPhysics {
 // Rough runs (p.omega not empty): the tangential part too (Engine::resolve_pair: after the normal rule, from
 // the velocities and spins before the collision, skipped when the TC model made it elastic), and the
 // spins after it in w[0], w[1] when w is given.
-template <class T>
-inline void predict_pair_velocities(const EventPhysics<T>& ph, const Particles<T>& p, std::int32_t i,
-                                    std::int32_t j, const Disk<T>& a, const Disk<T>& b, bool tc_elastic, T v[4],
-                                    T* w = nullptr) {
+template <class T, class S>
+inline void predict_pair_velocities(const EventPhysics<T>& ph, const S& p, std::int32_t i, std::int32_t j,
+                                    const Disk<T>& a, const Disk<T>& b, bool tc_elastic, T v[4], T* w = nullptr) {
   T dx = b.x - a.x, dy = b.y - a.y;
   if (ph.periodic) {
     if (dx > ph.half_lx) dx -= ph.lx; else if (dx < -ph.half_lx) dx += ph.lx;
     if (dy > ph.half_ly) dy -= ph.ly; else if (dy < -ph.half_ly) dy += ph.ly;
   }
-  const T opx = tc_elastic ? T(2) : ph.pair_one_plus_xi(p.species[std::size_t(i)], p.species[std::size_t(j)]);
+  const T opx = tc_elastic ? T(2) : ph.pair_one_plus_xi(species_of(p, std::size_t(i)), species_of(p, std::size_t(j)));
   v[0] = a.vx, v[1] = a.vy, v[2] = b.vx, v[3] = b.vy;
-  collide_pair(dx, dy, p.mass[std::size_t(i)], p.mass[std::size_t(j)], opx, v[0], v[1], v[2], v[3]);
+  collide_pair(dx, dy, mass_of(p, std::size_t(i)), mass_of(p, std::size_t(j)), opx, v[0], v[1], v[2], v[3]);
   if (p.omega.empty()) return;
   const std::size_t si = std::size_t(i), sj = std::size_t(j);
   T wi = p.omega[si], wj = p.omega[sj];
-  const T opb = tc_elastic ? T(0) : ph.pair_one_plus_beta(p.species[si], p.species[sj]);
-  collide_pair_tangential(dx, dy, b.vx - a.vx, b.vy - a.vy, p.mass[si], p.mass[sj], a.r, b.r, p.inertia[si],
+  const T opb = tc_elastic ? T(0) : ph.pair_one_plus_beta(species_of(p, si), species_of(p, sj));
+  collide_pair_tangential(dx, dy, b.vx - a.vx, b.vy - a.vy, mass_of(p, si), mass_of(p, sj), a.r, b.r, p.inertia[si],
                           p.inertia[sj], opb, v[0], v[1], v[2], v[3], wi, wj);
   if (w) w[0] = wi, w[1] = wj;
 }
 
-template <class T>
-inline void predict_pair_velocities(const EventPhysics<T>& ph, const Particles<T>& p, std::int32_t i,
-                                    std::int32_t j, T t, bool tc_elastic, T v[4], T* w = nullptr) {
-  Disk<T> a = p.disk[std::size_t(i)], b = p.disk[std::size_t(j)];
+template <class T, class S>
+inline void predict_pair_velocities(const EventPhysics<T>& ph, const S& p, std::int32_t i, std::int32_t j, T t,
+                                    bool tc_elastic, T v[4], T* w = nullptr) {
+  Disk<T> a = record_of(p, std::size_t(i)), b = record_of(p, std::size_t(j));
   advance_disk(a, t, ph.gx, ph.gy);
   advance_disk(b, t, ph.gx, ph.gy);
   predict_pair_velocities(ph, p, i, j, a, b, tc_elastic, v, w);
@@ -113,9 +128,9 @@ inline void predict_pair_velocities(const EventPhysics<T>& ph, const Particles<T
 // Velocity after disk i hits `wall` at time t (Engine::resolve_wall). With xi_w = 1 collide_wall computes
 // exactly what collide_wall_elastic does (a multiplication by 1 and a negation are exact).
 // Rough runs: then the wall's tangential part (not when TC-elastic), the spin after it in *w if given.
-template <class T>
-inline void predict_wall_velocity(const EventPhysics<T>& ph, const Particles<T>& p, std::int32_t i,
-                                  std::int32_t wall, T t, bool tc_elastic, T v[2], T* w = nullptr) {
+template <class T, class S>
+inline void predict_wall_velocity(const EventPhysics<T>& ph, const S& p, std::int32_t i, std::int32_t wall, T t,
+                                  bool tc_elastic, T v[2], T* w = nullptr) {
   v[0] = p.vx_at(std::size_t(i), t), v[1] = p.vy_at(std::size_t(i), t);
   const T vx0 = v[0], vy0 = v[1];
   const bool vertical = wall == kWallLeft || wall == kWallRight;
@@ -127,17 +142,17 @@ inline void predict_wall_velocity(const EventPhysics<T>& ph, const Particles<T>&
   static constexpr int kNormal[4][2] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};  // Engine::kWallNormal
   const std::size_t si = std::size_t(i);
   T wi = p.omega[si];
-  collide_wall_tangential(T(kNormal[wall & 3][0]), T(kNormal[wall & 3][1]), vx0, vy0, p.mass[si], p.disk[si].r,
+  collide_wall_tangential(T(kNormal[wall & 3][0]), T(kNormal[wall & 3][1]), vx0, vy0, mass_of(p, si), record_of(p, si).r,
                           p.inertia[si], tc_elastic ? T(0) : ph.wall_one_plus_beta, v[0], v[1], wi);
   if (w) *w = wi;
 }
 
 // Velocity after disk i hits segment s at time t (Engine::resolve_segment): a copy of the record brought
 // to t, then the segment's rule with its 1 + xi (2 with the TC flag).
-template <class T>
-inline void predict_segment_velocity(const EventPhysics<T>& ph, const Particles<T>& p, std::int32_t i,
-                                     std::int32_t s, T t, bool tc_elastic, T v[2]) {
-  Disk<T> d = p.disk[std::size_t(i)];
+template <class T, class S>
+inline void predict_segment_velocity(const EventPhysics<T>& ph, const S& p, std::int32_t i, std::int32_t s, T t,
+                                     bool tc_elastic, T v[2]) {
+  Disk<T> d = record_of(p, std::size_t(i));
   advance_disk(d, t, ph.gx, ph.gy);
   v[0] = d.vx, v[1] = d.vy;
   if (s < 0 || std::size_t(s) >= ph.segments.size()) return;  // a version 1 log's header lists no segments
@@ -157,11 +172,14 @@ inline T predict_segment_time(const EventPhysics<T>& ph, const Disk<T>& d, std::
 // time, against the partner's image nearest at now (Engine::pair_time; predict_pair without gravity).
 // kGravity = false is for callers that know the header has no gravity (gx = gy = 0): the same bits, with
 // the gravity branches compiled out (replay's decoder; position_along with g = 0 is drift exactly).
-template <class T, bool kGravity = true>
-[[gnu::always_inline]] inline T predict_pair_time(const EventPhysics<T>& ph, const Particles<T>& p, std::int32_t i,
+template <class T, bool kGravity = true, class S>
+[[gnu::always_inline]] inline T predict_pair_time(const EventPhysics<T>& ph, const S& p, std::int32_t i,
                                                   std::int32_t j) {
-  const Disk<T>* di = &p.disk[std::size_t(i)];
-  const Disk<T>* dj = &p.disk[std::size_t(j)];
+  // References (to the records, or to the writer's materialised copies: lifetime extended).
+  const Disk<T>& ri = record_of(p, std::size_t(i));
+  const Disk<T>& rj = record_of(p, std::size_t(j));
+  const Disk<T>* di = &ri;
+  const Disk<T>* dj = &rj;
   if (dj->t > di->t) std::swap(di, dj);
   const T now = di->t;
   const T gx = kGravity ? ph.gx : T(0), gy = kGravity ? ph.gy : T(0);

@@ -3,7 +3,8 @@
 // Chunk boundaries are a function of the event index alone (every chunk_events events, and at every
 // keyframe), so a resumed run cut at a keyframe writes exactly the chunks the uninterrupted run wrote.
 // The event loop only copies each event into the open chunk's buffer; the columns are coded on the record
-// writer's worker (Coder below), which keeps the replayed state that format version 2 predicts from. The
+// writer's worker (Coder below), which keeps the replayed state that format version 2 predicts from
+// (log/coder_state.hpp: x, y, vx, vy, t a disk, not a copy of the engine's records). The
 // worker builds records in submission order, so the coder sees the events in order and the bytes are
 // those of coding on the loop. Rejected: coding on the event loop (measured: at N = 1e4, log format 2's
 // predictions and the replayed state's updates took the logging overhead from 8-14 % to 34 %).
@@ -18,8 +19,10 @@
 
 #include "core/build_info.hpp"
 #include "log/chunk_codec.hpp"
+#include "log/coder_state.hpp"
 #include "ede_log.capnp.h"
 #include "log/log_framing.hpp"
+#include "log/flat_message.hpp"
 #include "log/record_writer.hpp"
 #include "log/scalar_bytes.hpp"
 #include "scene/scene_label.hpp"
@@ -40,7 +43,7 @@ logschema::ScalarType schema_scalar() {
 // its schema's full size, null pointers included: so such a run's records keep their bytes. Rough runs
 // build the full struct, rotation fields included. Readers see absent fields as empty either way.
 template <class S>
-typename S::Builder init_record(capnp::MallocMessageBuilder& message, bool full, std::uint16_t data_words,
+typename S::Builder init_record(capnp::MessageBuilder& message, bool full, std::uint16_t data_words,
                                 std::uint16_t pointers) {
   if (full) return message.initRoot<S>();
   return message.getRoot<capnp::AnyPointer>().initAsAnyStruct(data_words, pointers).template as<S>();
@@ -56,22 +59,28 @@ static_assert(capnp::_::structSize<logschema::Chunk>().data == kChunkWords &&
 static_assert(capnp::_::structSize<logschema::Keyframe>().data == kKeyframeWords &&
               capnp::_::structSize<logschema::Keyframe>().pointers == kKeyframePointers + 1);
 
-std::vector<unsigned char> to_bytes(capnp::MessageBuilder& message) {
-  const kj::Array<capnp::word> words = capnp::messageToFlatArray(message);
-  const auto bytes = words.asBytes();
-  return std::vector<unsigned char>(bytes.begin(), bytes.end());
+// Words of a record's root struct, pointer included (init_record's sizes, or the schema's).
+template <class S>
+constexpr std::size_t root_words(bool full, std::uint16_t data_words, std::uint16_t pointers) {
+  return 1 + (full ? std::size_t(capnp::_::structSize<S>().data) + capnp::_::structSize<S>().pointers
+                   : std::size_t(data_words) + pointers);
 }
 
 void set_data(capnp::Data::Builder out, const std::vector<unsigned char>& bytes) {
   if (!bytes.empty()) std::memcpy(out.begin(), bytes.data(), bytes.size());
 }
 
-// A per-disk column of scalars, byte-plane shuffled (positions and velocities share their high bytes).
+// A per-disk column of scalars, byte-plane shuffled (positions and velocities share their high bytes):
+// byte b of value i at out[b * n + i], shuffle_bytes' layout, written straight into the message's Data
+// (no raw and shuffled copies next to the message being built).
 template <class T, class F>
-std::vector<unsigned char> scalar_column(std::size_t n, F value_of) {
-  std::vector<unsigned char> raw(n * kScalarWidth<T>);
-  for (std::size_t i = 0; i < n; ++i) scalar_to_bytes<T>(value_of(i), raw.data() + i * kScalarWidth<T>);
-  return shuffle_bytes(raw, kScalarWidth<T>);
+void set_scalar_column(capnp::Data::Builder out, std::size_t n, F value_of) {
+  unsigned char* const o = out.begin();
+  for (std::size_t i = 0; i < n; ++i) {
+    unsigned char b[kScalarWidth<T>];
+    scalar_to_bytes<T>(value_of(i), b);
+    for (std::size_t k = 0; k < kScalarWidth<T>; ++k) o[k * n + i] = b[k];
+  }
 }
 
 template <class T>
@@ -145,26 +154,74 @@ void LogRunInfo::set_restitution(const PhysicsSpec& physics) {
     segments.insert(segments.end(), {s.from[0], s.from[1], s.to[0], s.to[1], s.restitution});
 }
 
+// An event as the open chunk keeps it until the worker codes it: what every coder reads (56 bytes for
+// double, the engine's EventOutcome is 104); the spins after a rough run's event and the velocities before
+// it that format version 1 codes against go to ChunkEvents::extra only in the runs that need them. Up to
+// six chunks of 16 384 events are alive at once (the open one, four queued, the worker's), so this is
+// ~5 MB less at any N (docs/performance.md, "Memory at 10⁶ with the log").
+template <class T>
+struct LoggedEvent {
+  T time, vix, viy, vjx, vjy;
+  std::int32_t i, j;
+  EventKind kind;
+  bool tc_elastic;
+};
+
+template <class T>
+struct ChunkEvents {
+  std::vector<LoggedEvent<T>> events;
+  std::vector<T> extra;  // per event: wi, wj (rough runs), then vix0, viy0, vjx0, vjy0 (format version 1)
+  bool spins = false, before = false;
+
+  std::size_t size() const { return events.size(); }
+  bool empty() const { return events.empty(); }
+  void reserve(std::size_t n) {
+    events.reserve(n);
+    extra.reserve(n * ((spins ? 2 : 0) + (before ? 4 : 0)));
+  }
+  void push_back(const EventOutcome<T>& e) {
+    events.push_back({e.time, e.vix, e.viy, e.vjx, e.vjy, e.i, e.j, e.kind, e.tc_elastic});
+    if (spins) extra.insert(extra.end(), {e.wi, e.wj});
+    if (before) extra.insert(extra.end(), {e.vix0, e.viy0, e.vjx0, e.vjy0});
+  }
+  EventOutcome<T> operator[](std::size_t k) const {
+    const LoggedEvent<T>& l = events[k];
+    EventOutcome<T> e;
+    e.time = l.time, e.kind = l.kind, e.tc_elastic = l.tc_elastic, e.i = l.i, e.j = l.j;
+    e.vix = l.vix, e.viy = l.viy, e.vjx = l.vjx, e.vjy = l.vjy;
+    const T* x = extra.data() + k * ((spins ? 2 : 0) + (before ? 4 : 0));
+    if (spins) e.wi = x[0], e.wj = x[1], x += 2;
+    if (before) e.vix0 = x[0], e.viy0 = x[1], e.vjx0 = x[2], e.vjy0 = x[3];
+    return e;
+  }
+};
+
 // What codes the columns: the encoder and, for version 2, the state as replay will have it before each
 // event, kept by applying each event with the same function replay uses. Touched by the record writer's
 // worker only, once the first chunk is submitted.
 template <class T>
 struct ChunkCoder {
-  std::vector<T> mass;
   EventPhysics<T> physics;
   std::uint32_t format_version = 2;
-  ChunkEncoder<T> chunk{mass, format_version, physics};
-  Particles<T> replayed;
+  // Version 2: what the predictors read, in 40 bytes a disk (log/coder_state.hpp). Version 1: nothing;
+  // its encoder reads the masses (`v1_mass`, empty in version 2).
+  CoderState<T> replayed;
+  std::vector<T> v1_mass;
+  ChunkEncoder<T> chunk{v1_mass, format_version, physics};
   std::uint32_t run_id = 0;  // the header's (log/run_id.hpp), repeated in every chunk
   bool rotation = false;     // rough run: chunks carry the spin column
 
   explicit ChunkCoder(std::uint32_t version) : format_version(version) {}
 
-  std::vector<unsigned char> code(std::uint64_t first_event, const std::vector<EventOutcome<T>>& events) {
+  FlatMessage code(std::uint64_t first_event, const ChunkEvents<T>& events) {
     chunk.reset(first_event);
-    for (const EventOutcome<T>& e : events) add_event(e);
+    for (std::size_t k = 0; k < events.size(); ++k) add_event(events[k]);
     const ChunkColumns c = chunk.columns();
-    capnp::MallocMessageBuilder message;
+    FlatMessageBuilder message(root_words<logschema::Chunk>(rotation, kChunkWords, kChunkPointers) +
+                              message_words_of(c.times.size()) + message_words_of(c.kinds.size()) +
+                              message_words_of(c.disks.size()) + message_words_of(c.partners.size()) +
+                              message_words_of(c.raw.size()) + message_words_of(c.residuals.size()) +
+                              message_words_of(c.spins.size()));
     auto b = init_record<logschema::Chunk>(message, rotation, kChunkWords, kChunkPointers);
     b.setFirstEvent(first_event);
     b.setCount(chunk.count());
@@ -176,7 +233,7 @@ struct ChunkCoder {
     set_data(b.initVelocitiesRaw(std::uint32_t(c.raw.size())), c.raw);
     set_data(b.initVelocityResiduals(std::uint32_t(c.residuals.size())), c.residuals);
     if (rotation) set_data(b.initSpinResiduals(std::uint32_t(c.spins.size())), c.spins);
-    return to_bytes(message);
+    return message.finish();
   }
 
   void add_event(const EventOutcome<T>& e) {
@@ -195,12 +252,12 @@ struct LogWriter<T>::Impl {
   LogRunInfo run;
   LogSettings settings;
   RecordWriter out;
-  ChunkCoder<T> coder{settings.format_version};  // the worker's, once set up (coder_ready)
-  bool coder_ready = false;
+  ChunkCoder<T> coder{settings.format_version};  // the worker's, once set up (coder_ready, state_ready)
+  bool coder_ready = false, state_ready = false;
   std::vector<Disk<T>> resume_disks;
   std::vector<T> resume_omega;
   // The open chunk, on the event loop: its events as the engine reported them.
-  std::vector<EventOutcome<T>> chunk_events;
+  ChunkEvents<T> chunk_events;
   std::uint64_t chunk_first = 0;
   std::uint64_t logged = 0;
   struct Pending {  // an index entry whose offset is known once the record is written
@@ -220,12 +277,21 @@ struct LogWriter<T>::Impl {
 
   // What needs the disks: the masses and physics (predictions), the replayed state before the first event
   // (the initial state, or a resumed run's keyframe records), and the automatic keyframe interval. Runs on
-  // the event loop before the first chunk is submitted, so before the worker touches the coder.
-  void ensure_coder(const Particles<T>& p) {
+  // the event loop before the first chunk is submitted, so before the worker touches the coder. The
+  // replayed state (`with_state`) is copied after the header is written (on_start): the header's run id
+  // makes transient copies of the header (run_id.cpp), which then do not coincide with this copy.
+  void ensure_coder(const Particles<T>& p, bool with_state = true) {
     if (settings.keyframe_interval == 0) settings.keyframe_interval = auto_keyframe_interval(p.size());
-    if (coder_ready) return;
+    if (!coder_ready) setup_coder(p);
+    if (with_state && !state_ready) {
+      state_ready = true;
+      copy_state(p);
+    }
+  }
+
+  void setup_coder(const Particles<T>& p) {
     coder_ready = true;
-    coder.mass = p.mass;
+    if (settings.format_version < 2) coder.v1_mass = p.mass;
     EventPhysics<T>& physics = coder.physics;
     physics = EventPhysics<T>::box(run.lx, run.ly, run.boundary == BoundaryKind::Periodic, T(run.gx), T(run.gy));
     physics.species = std::max<std::size_t>(run.species_names.size(), 1);
@@ -246,20 +312,29 @@ struct LogWriter<T>::Impl {
                                    physics.one_plus_beta.empty() ? T(0) : physics.one_plus_beta[0]);
       physics.wall_one_plus_beta = T(1) + T(run.wall_roughness);
     }
+  }
+
+  void copy_state(const Particles<T>& p) {
     if (settings.format_version < 2) return;
-    coder.replayed = p;
+    coder.replayed.assign(p);
     if (!resume_omega.empty()) coder.replayed.omega = resume_omega;
     resume_omega.clear();
     for (std::size_t i = 0; i < resume_disks.size() && i < coder.replayed.size(); ++i) {
-      Disk<T>& d = coder.replayed.disk[i];
       const Disk<T>& from = resume_disks[i];
-      d.x = from.x, d.y = from.y, d.vx = from.vx, d.vy = from.vy, d.t = from.t;
+      coder.replayed.motion[i] = {from.x, from.y, from.vx, from.vy, from.t};
     }
     resume_disks.clear();
   }
 
   void write_header(const Particles<T>& p) {
-    capnp::MallocMessageBuilder message;
+    // Texts and the small tables are a guess (a short one only costs a copy); the per-disk columns exact.
+    const std::size_t n = p.size(), column = message_words_of(n * kScalarWidth<T>);
+    FlatMessageBuilder message(root_words<logschema::Header>(run.rotation, kHeaderWords, kHeaderPointers) + 256 +
+                              message_words_of(run.scene_text.size() + 1) + message_words_of(run.scene_name.size() + 1) +
+                              2 * run.species_names.size() + 3 * column + message_words_of(4 * n) +
+                              (run.rotation ? column : 0) +
+                              message_words_of(kScalarWidth<T> * (run.pair_restitution.size() + run.segments.size() +
+                                                                  2 * run.pair_roughness.size() + 8)));
     auto h = init_record<logschema::Header>(message, run.rotation, kHeaderWords, kHeaderPointers);
     h.setEngineVersion(run.engine_version.empty() ? std::string(EDE_VERSION) : run.engine_version);
     h.setCompiler(run.compiler.empty() ? build_compiler() : run.compiler);
@@ -277,10 +352,8 @@ struct LogWriter<T>::Impl {
     h.setChunkEvents(settings.chunk_events);
     h.setKeyframeInterval(settings.keyframe_interval);
     h.setRebuildInterval(run.rebuild_interval);
-    set_data(h.initRadius(std::uint32_t(p.size() * kScalarWidth<T>)),
-             scalar_column<T>(p.size(), [&](std::size_t i) { return p.disk[i].r; }));
-    set_data(h.initMass(std::uint32_t(p.size() * kScalarWidth<T>)),
-             scalar_column<T>(p.size(), [&](std::size_t i) { return p.mass[i]; }));
+    set_scalar_column<T>(h.initRadius(std::uint32_t(n * kScalarWidth<T>)), n, [&](std::size_t i) { return p.disk[i].r; });
+    set_scalar_column<T>(h.initMass(std::uint32_t(n * kScalarWidth<T>)), n, [&](std::size_t i) { return p.mass[i]; });
     auto species = h.initSpecies(std::uint32_t(p.size()));
     for (std::size_t i = 0; i < p.size(); ++i) species.set(std::uint32_t(i), std::uint32_t(p.species[i]));
     h.setInitialEnergy(kinetic_energy(p));
@@ -296,8 +369,8 @@ struct LogWriter<T>::Impl {
       for (const double v : run.segments) walls.push_back(T(v));
       set_data(h.initWallRestitution(std::uint32_t(walls.size() * kScalarWidth<T>)), raw_scalars(walls));
       if (run.rotation) {
-        set_data(h.initInertia(std::uint32_t(p.size() * kScalarWidth<T>)),
-                 scalar_column<T>(p.size(), [&](std::size_t i) { return p.inertia[i]; }));
+        set_scalar_column<T>(h.initInertia(std::uint32_t(n * kScalarWidth<T>)), n,
+                             [&](std::size_t i) { return p.inertia[i]; });
         std::vector<T> beta = physics.one_plus_beta;
         beta.insert(beta.end(), 4, physics.wall_one_plus_beta);
         set_data(h.initOnePlusBeta(std::uint32_t(beta.size() * kScalarWidth<T>)), raw_scalars(beta));
@@ -309,7 +382,7 @@ struct LogWriter<T>::Impl {
     h.setRunId(run_id);
     logfmt::RecordHeader rh;
     rh.kind = logfmt::RecordKind::Header;
-    out.submit(rh, to_bytes(message));
+    out.submit(rh, message.finish());
   }
 
   void flush_chunk() {
@@ -318,13 +391,13 @@ struct LogWriter<T>::Impl {
     rh.kind = logfmt::RecordKind::Chunk;
     rh.first_event = chunk_first;
     rh.event_count = chunk_events.size();
-    rh.time_first = double(chunk_events.front().time);
-    rh.time_last = double(chunk_events.back().time);
+    rh.time_first = double(chunk_events.events.front().time);
+    rh.time_last = double(chunk_events.events.back().time);
     const std::size_t seq = out.submit_built(
         rh, [coder = &coder, first = chunk_first, events = std::move(chunk_events)] { return coder->code(first, events); });
     pending.push_back({seq, {std::uint8_t(logfmt::RecordKind::Chunk), 0, rh.first_event, rh.event_count,
                              rh.time_first, rh.time_last, false}});
-    chunk_events = {};
+    chunk_events = {{}, {}, run.rotation, settings.format_version < 2};
     chunk_events.reserve(settings.chunk_events);
     chunk_first = logged;
   }
@@ -332,29 +405,43 @@ struct LogWriter<T>::Impl {
   void write_keyframe(const Particles<T>& p, T time, const RebuildPoint<T>* rebuild) {
     flush_chunk();
     const std::size_t n = p.size();
-    capnp::MallocMessageBuilder message;
+    FlatMessageBuilder message(keyframe_words(n, rebuild));
     auto k = init_record<logschema::Keyframe>(message, run.rotation, kKeyframeWords, kKeyframePointers);
     k.setEventsBefore(logged);
     k.setRunId(run_id);
     set_data(k.initTime(kScalarWidth<T>), one_scalar(time));
     k.setResumable(rebuild != nullptr);
-    const auto column = [&](auto value_of) { return scalar_column<T>(n, value_of); };
     const std::uint32_t bytes_per_column = std::uint32_t(n * kScalarWidth<T>);
-    set_data(k.initX(bytes_per_column), column([&](std::size_t i) { return p.disk[i].x; }));
-    set_data(k.initY(bytes_per_column), column([&](std::size_t i) { return p.disk[i].y; }));
-    set_data(k.initVx(bytes_per_column), column([&](std::size_t i) { return p.disk[i].vx; }));
-    set_data(k.initVy(bytes_per_column), column([&](std::size_t i) { return p.disk[i].vy; }));
-    set_data(k.initT(bytes_per_column), column([&](std::size_t i) { return p.disk[i].t; }));
-    if (run.rotation) set_data(k.initOmega(bytes_per_column), column([&](std::size_t i) { return p.omega[i]; }));
+    const auto column = [&](capnp::Data::Builder out, auto value_of) { set_scalar_column<T>(out, n, value_of); };
+    column(k.initX(bytes_per_column), [&](std::size_t i) { return p.disk[i].x; });
+    column(k.initY(bytes_per_column), [&](std::size_t i) { return p.disk[i].y; });
+    column(k.initVx(bytes_per_column), [&](std::size_t i) { return p.disk[i].vx; });
+    column(k.initVy(bytes_per_column), [&](std::size_t i) { return p.disk[i].vy; });
+    column(k.initT(bytes_per_column), [&](std::size_t i) { return p.disk[i].t; });
+    if (run.rotation) column(k.initOmega(bytes_per_column), [&](std::size_t i) { return p.omega[i]; });
     if (rebuild) write_resume_fields(k, *rebuild);
     logfmt::RecordHeader rh;
     rh.kind = logfmt::RecordKind::Keyframe;
     rh.first_event = logged;
     rh.time_first = rh.time_last = double(time);
     rh.resumable = rebuild != nullptr;
-    const std::size_t seq = out.submit(rh, to_bytes(message));
+    const std::size_t seq = out.submit(rh, message.finish());
     pending.push_back({seq, {std::uint8_t(logfmt::RecordKind::Keyframe), 0, logged, 0, rh.time_first,
                              rh.time_last, rh.resumable}});
+  }
+
+  // The words of a keyframe's message, exactly (write_keyframe, write_resume_fields), so that it is built in
+  // one segment and handed to the record writer without a copy.
+  std::size_t keyframe_words(std::size_t n, const RebuildPoint<T>* rebuild) const {
+    const std::size_t column = message_words_of(n * kScalarWidth<T>);
+    std::size_t words = root_words<logschema::Keyframe>(run.rotation, kKeyframeWords, kKeyframePointers) +
+                        message_words_of(kScalarWidth<T>) + (run.rotation ? 6 : 5) * column;
+    if (rebuild) {
+      words += message_words_of(4 * n);
+      if (!rebuild->particles.last_collision.empty()) words += column;
+      words += kCountedKindsV2 + 3;
+    }
+    return words;
   }
 
   void write_resume_fields(logschema::Keyframe::Builder k, const RebuildPoint<T>& r) {
@@ -362,8 +449,8 @@ struct LogWriter<T>::Impl {
     auto partners = k.initLastPartner(std::uint32_t(p.size()));
     for (std::size_t i = 0; i < p.size(); ++i) partners.set(std::uint32_t(i), p.disk[i].last_partner);
     if (!p.last_collision.empty())
-      set_data(k.initLastCollision(std::uint32_t(p.size() * kScalarWidth<T>)),
-               scalar_column<T>(p.size(), [&](std::size_t i) { return p.last_collision[i]; }));
+      set_scalar_column<T>(k.initLastCollision(std::uint32_t(p.size() * kScalarWidth<T>)), p.size(),
+                           [&](std::size_t i) { return p.last_collision[i]; });
     // The six kinds before segments, stale, tc_elastic; then segment events only in runs with segments
     // (FORMAT.md), so the keyframes of every other run keep their bytes.
     const bool segments = !run.segments.empty();
@@ -385,7 +472,8 @@ struct LogWriter<T>::Impl {
       e.offset = out.offset_of(p.sequence);
       entries.push_back(e);
     }
-    capnp::MallocMessageBuilder message;
+    FlatMessageBuilder message(64 + entries.size() * (capnp::_::structSize<logschema::Index::Entry>().data + capnp::_::structSize<logschema::Index::Entry>().pointers) +
+                              message_words_of(std::string(to_string(status)).size() + 1));
     auto idx = message.initRoot<logschema::Index>();
     auto list = idx.initEntries(std::uint32_t(entries.size()));
     for (std::size_t k = 0; k < entries.size(); ++k) {
@@ -405,7 +493,7 @@ struct LogWriter<T>::Impl {
     rh.kind = logfmt::RecordKind::Index;
     rh.first_event = logged;
     rh.time_first = rh.time_last = double(final_time);
-    const std::size_t seq = out.submit(rh, to_bytes(message));
+    const std::size_t seq = out.submit(rh, message.finish());
     out.flush();
     logfmt::Trailer trailer{out.offset_of(seq), out.end_offset()};
     std::vector<unsigned char> bytes(logfmt::kTrailerSize);
@@ -444,6 +532,8 @@ Result<std::unique_ptr<LogWriter<T>>> LogWriter<T>::create(const std::string& pa
   if (run.rotation && settings.format_version < 2)
     return Error{"log settings: a run of rough (rotating) disks is written in format version 2 only"};
   impl->chunk_first = impl->logged;
+  impl->chunk_events.spins = run.rotation;
+  impl->chunk_events.before = settings.format_version < 2;
   impl->chunk_events.reserve(settings.chunk_events);
   return std::unique_ptr<LogWriter<T>>(new LogWriter<T>(std::move(impl)));
 }
@@ -456,8 +546,9 @@ LogWriter<T>::~LogWriter() = default;
 
 template <class T>
 void LogWriter<T>::on_start(T, const Particles<T>& p) {
-  impl_->ensure_coder(p);
+  impl_->ensure_coder(p, false);
   impl_->write_header(p);
+  impl_->ensure_coder(p);
 }
 
 template <class T>

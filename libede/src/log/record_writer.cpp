@@ -5,16 +5,19 @@
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#define ZSTD_STATIC_LINKING_ONLY  // ZSTD_c_stableInBuffer (an experimental parameter of libzstd >= 1.4.5)
 #include <zstd.h>
 
 #include <cerrno>
 #include <cstring>
+#include <memory>
 #include <new>
 
 namespace ede {
 
 namespace {
 constexpr std::size_t kMaxQueued = 4;  // records waiting for the worker before the event loop waits
+constexpr std::size_t kStreamPiece = std::size_t(1) << 20;  // write_two_pass's output buffer
 
 std::string write_all(int fd, const unsigned char* p, std::size_t n) {
   while (n > 0) {
@@ -30,8 +33,9 @@ std::string write_all(int fd, const unsigned char* p, std::size_t n) {
 }
 }  // namespace
 
-RecordWriter::RecordWriter(const std::string& path, std::uint64_t start_offset, int zstd_level)
-    : path_(path), level_(zstd_level), offset_(start_offset) {
+RecordWriter::RecordWriter(const std::string& path, std::uint64_t start_offset, int zstd_level,
+                           std::size_t two_pass_above)
+    : path_(path), level_(zstd_level), two_pass_above_(two_pass_above), offset_(start_offset) {
   // Opened without O_TRUNC and locked before anything is cut: a second writer of the same path (another
   // ede-sim -o, a --resume of a log still being written) is refused without touching the first's bytes.
   fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
@@ -67,6 +71,9 @@ RecordWriter::RecordWriter(const std::string& path, std::uint64_t start_offset, 
   ZSTD_CCtx_setParameter(cctx, ZSTD_c_compressionLevel, level_);
   ZSTD_CCtx_setParameter(cctx, ZSTD_c_checksumFlag, 1);
   ZSTD_CCtx_setParameter(cctx, ZSTD_c_contentSizeFlag, 1);
+  // write_two_pass compresses a whole record in pieces: with a stable input zstd reads the record where it
+  // is, as ZSTD_compress2 does, and makes the same frame (buffering the input instead gives other bytes).
+  ZSTD_CCtx_setParameter(cctx, ZSTD_c_stableInBuffer, 1);
   zstd_context_ = cctx;
   worker_ = std::thread([this] { work(); });
 }
@@ -76,14 +83,14 @@ RecordWriter::~RecordWriter() { finish(); }
 void RecordWriter::write_raw(std::vector<unsigned char> bytes) {
   std::unique_lock lock(mutex_);
   idle_.wait(lock, [&] { return queue_.size() < kMaxQueued; });
-  queue_.push_back(Job{true, {}, std::move(bytes), {}});
+  queue_.push_back(Job{true, {}, std::move(bytes), {}, {}});
   wake_.notify_one();
 }
 
-std::size_t RecordWriter::submit(logfmt::RecordHeader header, std::vector<unsigned char> content) {
+std::size_t RecordWriter::submit(logfmt::RecordHeader header, FlatMessage content) {
   std::unique_lock lock(mutex_);
   idle_.wait(lock, [&] { return queue_.size() < kMaxQueued; });
-  queue_.push_back(Job{false, header, std::move(content), {}});
+  queue_.push_back(Job{false, header, {}, std::move(content), {}});
   wake_.notify_one();
   return submitted_++;
 }
@@ -91,7 +98,7 @@ std::size_t RecordWriter::submit(logfmt::RecordHeader header, std::vector<unsign
 std::size_t RecordWriter::submit_built(logfmt::RecordHeader header, Builder build) {
   std::unique_lock lock(mutex_);
   idle_.wait(lock, [&] { return queue_.size() < kMaxQueued; });
-  queue_.push_back(Job{false, header, {}, std::move(build)});
+  queue_.push_back(Job{false, header, {}, {}, std::move(build)});
   wake_.notify_one();
   return submitted_++;
 }
@@ -155,7 +162,7 @@ void RecordWriter::work() {
         problem = write_job(job);
       } catch (const std::bad_alloc&) {
         problem = "out of memory while compressing a record of '" + path_ + "' (" +
-                  std::to_string(job.bytes.size()) + " bytes)";
+                  std::to_string(job.content.size()) + " bytes)";
       }
     {
       std::lock_guard lock(mutex_);
@@ -175,22 +182,82 @@ std::string RecordWriter::write_job(Job& job) {
     return e.empty() ? e : "writing '" + path_ + "': " + e;
   }
   if (job.build) {
-    job.bytes = job.build();
+    job.content = job.build();
     job.build = nullptr;  // frees the chunk's events now
   }
   auto* cctx = static_cast<ZSTD_CCtx*>(zstd_context_);
-  std::vector<unsigned char> out(logfmt::kRecordHeaderSize + ZSTD_compressBound(job.bytes.size()));
-  const std::size_t n = ZSTD_compress2(cctx, out.data() + logfmt::kRecordHeaderSize, out.size() - logfmt::kRecordHeaderSize,
-                                       job.bytes.data(), job.bytes.size());
-  if (ZSTD_isError(n)) return std::string("compressing a log record: ") + ZSTD_getErrorName(n);
-  job.header.payload_size = n;
-  logfmt::encode_record_header(job.header, out.data());
-  const std::string e = write_all(fd_, out.data(), logfmt::kRecordHeaderSize + n);
-  offset_ += logfmt::kRecordHeaderSize + n;
-  if (!e.empty()) return "writing '" + path_ + "': " + e;
+  const std::size_t size = job.content.size();
+  const std::size_t bound = ZSTD_compressBound(size);
+  if (bound > two_pass_above_) {
+    if (std::string e = write_two_pass(job); !e.empty()) return e;
+  } else {
+    const std::unique_ptr<unsigned char[]> out(new unsigned char[logfmt::kRecordHeaderSize + bound]);  // not zero-filled
+    const std::size_t n = ZSTD_compress2(cctx, out.get() + logfmt::kRecordHeaderSize, bound, job.content.data(), size);
+    job.content.release();  // freed before the write
+    if (ZSTD_isError(n)) return std::string("compressing a log record: ") + ZSTD_getErrorName(n);
+    job.header.payload_size = n;
+    logfmt::encode_record_header(job.header, out.get());
+    const std::string e = write_all(fd_, out.get(), logfmt::kRecordHeaderSize + n);
+    offset_ += logfmt::kRecordHeaderSize + n;
+    if (!e.empty()) return "writing '" + path_ + "': " + e;
+  }
   // A resumable keyframe is where ede-sim --resume restarts: make it durable (a kill needs no sync, the
   // page cache survives it; a power cut does not). Once per keyframe, on this thread: the run never waits.
   if (job.header.resumable && ::fdatasync(fd_) != 0) return "syncing '" + path_ + "' to disk: " + std::strerror(errno);
+  return {};
+}
+
+// Compresses the record's content whole (ZSTD_e_end, the input stable: ZSTD_compress2's frame) into a
+// piece buffer, `sink` taking each piece; returns the frame's size, or 0 with `error` set.
+namespace {
+template <class Sink>
+std::size_t compress_in_pieces(ZSTD_CCtx* cctx, const FlatMessage& content, unsigned char* piece, Sink&& sink,
+                               std::string& error) {
+  ZSTD_inBuffer in{content.data(), content.size(), 0};
+  std::size_t total = 0;
+  for (;;) {
+    ZSTD_outBuffer out{piece, kStreamPiece, 0};
+    const std::size_t left = ZSTD_compressStream2(cctx, &out, &in, ZSTD_e_end);
+    if (ZSTD_isError(left)) {
+      ZSTD_CCtx_reset(cctx, ZSTD_reset_session_only);
+      error = std::string("compressing a log record: ") + ZSTD_getErrorName(left);
+      return 0;
+    }
+    if (!sink(piece, out.pos)) return 0;
+    total += out.pos;
+    if (left == 0) return total;
+  }
+}
+}  // namespace
+
+// A large record (a keyframe or header at large N) is compressed twice, in 1 MiB pieces: first only to
+// learn its compressed size, which its header holds; then header and pieces are written as they come.
+// The compressed record is never held whole (at N = 10^6 a keyframe's is ~25 MB), at the price of
+// compressing it twice on this thread. A kill between the writes leaves a header whose payload is cut
+// short, which readers take for a cut record, as they do a write(2) cut short.
+std::string RecordWriter::write_two_pass(Job& job) {
+  auto* cctx = static_cast<ZSTD_CCtx*>(zstd_context_);
+  const std::unique_ptr<unsigned char[]> piece(new unsigned char[kStreamPiece]);
+  std::string error;
+  const std::size_t n = compress_in_pieces(cctx, job.content, piece.get(), [](const unsigned char*, std::size_t) { return true; }, error);
+  if (n == 0) return error;
+  job.header.payload_size = n;
+  unsigned char header[logfmt::kRecordHeaderSize];
+  logfmt::encode_record_header(job.header, header);
+  std::string e = write_all(fd_, header, sizeof header);
+  std::uint64_t written = e.empty() ? sizeof header : 0;
+  const std::size_t again = e.empty() ? compress_in_pieces(cctx, job.content, piece.get(),
+                                                             [&](const unsigned char* p, std::size_t k) {
+                                                               e = write_all(fd_, p, k);
+                                                               written += e.empty() ? k : 0;
+                                                               return e.empty();
+                                                             },
+                                                             error)
+                                      : 0;
+  offset_ += written;
+  job.content.release();
+  if (!e.empty()) return "writing '" + path_ + "': " + e;
+  if (again != n) return error.empty() ? "compressing a log record: the second pass made another size" : error;
   return {};
 }
 
