@@ -290,12 +290,16 @@ Result<std::uint64_t> write_events(const Log::Impl& impl, Replay<T>& cached, con
       r = own.get();
     }
     const std::size_t offset = bounds[k] - sp.first;
-    std::uint64_t& count = written[k];
+    // Counted in a local, stored once: written[k] and written[k + 1] share a cache line, and incrementing
+    // them per event from two threads made two threads slower than one (measured: 11.2-11.7 against
+    // 12.4-13.1 M events/s on this VM).
+    std::uint64_t count = 0;
     status[k] = r->for_each_event(bounds[k], bounds[k + 1], [&](const ReplayedEvent<T>& e) {
       if (!(e.time <= sp.t1)) return false;
       sink.put(offset + count++, e);
       return true;
     }, sink.extras());
+    written[k] = count;
   };
   std::vector<std::thread> workers;
   for (std::size_t k = 1; k < n; ++k) workers.emplace_back(run_piece, k);
