@@ -544,11 +544,14 @@ LogWriter<T>::LogWriter(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 template <class T>
 LogWriter<T>::~LogWriter() = default;
 
+// The coder's copy of the state is taken at the first keyframe (the engine's rebuild right after on_start,
+// before any event), once that keyframe is written if it is large: so the keyframe's message (44 B/disk)
+// and the copy (40 B/disk) are never alive together, and at N = 1e6 that was the run's peak (216 -> see
+// docs/performance.md). A run whose engine sends no rebuild first (resumed) copies at its first event.
 template <class T>
 void LogWriter<T>::on_start(T, const Particles<T>& p) {
   impl_->ensure_coder(p, false);
   impl_->write_header(p);
-  impl_->ensure_coder(p);
 }
 
 template <class T>
@@ -564,8 +567,12 @@ void LogWriter<T>::on_event(const EventOutcome<T>& e, const Particles<T>& p) {
 
 template <class T>
 void LogWriter<T>::on_rebuild(const RebuildPoint<T>& point) {
-  impl_->ensure_coder(point.particles);
-  impl_->write_keyframe(point.particles, point.time, &point);
+  Impl& w = *impl_;
+  w.ensure_coder(point.particles, false);
+  w.write_keyframe(point.particles, point.time, &point);
+  if (w.state_ready) return;
+  if (point.particles.size() * 5 * kScalarWidth<T> > RecordWriter::kTwoPassAbove) w.out.flush();  // the keyframe freed first
+  w.ensure_coder(point.particles);
 }
 
 template <class T>
