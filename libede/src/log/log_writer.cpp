@@ -326,19 +326,46 @@ struct LogWriter<T>::Impl {
     resume_disks.clear();
   }
 
+  // Words of the header's message: texts and the small tables are a guess (a short one only costs a copy);
+  // the per-disk columns exact.
+  std::size_t header_words(std::size_t n) const {
+    const std::size_t column = message_words_of(n * kScalarWidth<T>);
+    return root_words<logschema::Header>(run.rotation, kHeaderWords, kHeaderPointers) + 256 +
+           message_words_of(run.scene_text.size() + 1) + message_words_of(run.scene_name.size() + 1) +
+           2 * run.species_names.size() + 3 * column + message_words_of(4 * n) + (run.rotation ? column : 0) +
+           message_words_of(kScalarWidth<T> * (run.pair_restitution.size() + run.segments.size() +
+                                               2 * run.pair_roughness.size() + 8));
+  }
+
+  // The run id is computed from a message built for it alone (the build texts empty, run id 0: what
+  // run_id_of would make of the header), freed before the header itself is built: copying the finished
+  // header for it (run_id_of) kept three header-sized arrays alive at once next to the engine (~72 B/disk
+  // at N = 1e6, the run's peak RSS with the log).
   void write_header(const Particles<T>& p) {
-    // Texts and the small tables are a guess (a short one only costs a copy); the per-disk columns exact.
-    const std::size_t n = p.size(), column = message_words_of(n * kScalarWidth<T>);
-    FlatMessageBuilder message(root_words<logschema::Header>(run.rotation, kHeaderWords, kHeaderPointers) + 256 +
-                              message_words_of(run.scene_text.size() + 1) + message_words_of(run.scene_name.size() + 1) +
-                              2 * run.species_names.size() + 3 * column + message_words_of(4 * n) +
-                              (run.rotation ? column : 0) +
-                              message_words_of(kScalarWidth<T> * (run.pair_restitution.size() + run.segments.size() +
-                                                                  2 * run.pair_roughness.size() + 8)));
+    const std::size_t words = header_words(p.size());
+    // Set before the first chunk is submitted: the worker reads coder.run_id only after that. Format
+    // version 1 predates run ids and keeps its bytes (its records carry 0: not checked).
+    if (settings.format_version >= 2) {
+      FlatMessageBuilder for_id(words);
+      auto h = init_record<logschema::Header>(for_id, run.rotation, kHeaderWords, kHeaderPointers);
+      fill_header(h, p, true);
+      run_id = coder.run_id = run_id_of_cleared(h.asReader());
+    }
+    FlatMessageBuilder message(words);
     auto h = init_record<logschema::Header>(message, run.rotation, kHeaderWords, kHeaderPointers);
-    h.setEngineVersion(run.engine_version.empty() ? std::string(EDE_VERSION) : run.engine_version);
-    h.setCompiler(run.compiler.empty() ? build_compiler() : run.compiler);
-    h.setCompileFlags(run.compile_flags.empty() ? build_flags() : run.compile_flags);
+    fill_header(h, p, false);
+    h.setRunId(run_id);
+    logfmt::RecordHeader rh;
+    rh.kind = logfmt::RecordKind::Header;
+    out.submit(rh, message.finish());
+  }
+
+  // Every field of the header but the run id; `for_id`: the engine version, compiler and flags empty.
+  void fill_header(logschema::Header::Builder h, const Particles<T>& p, bool for_id) {
+    const std::size_t n = p.size();
+    h.setEngineVersion(for_id ? std::string() : run.engine_version.empty() ? std::string(EDE_VERSION) : run.engine_version);
+    h.setCompiler(for_id ? std::string() : run.compiler.empty() ? build_compiler() : run.compiler);
+    h.setCompileFlags(for_id ? std::string() : run.compile_flags.empty() ? build_flags() : run.compile_flags);
     h.setScalar(schema_scalar<T>());
     h.setSeed(run.seed);
     h.setSceneName(run.scene_name);
@@ -376,13 +403,6 @@ struct LogWriter<T>::Impl {
         set_data(h.initOnePlusBeta(std::uint32_t(beta.size() * kScalarWidth<T>)), raw_scalars(beta));
       }
     }
-    // Set before the first chunk is submitted: the worker reads coder.run_id only after that. Format
-    // version 1 predates run ids and keeps its bytes (its records carry 0: not checked).
-    if (settings.format_version >= 2) run_id = coder.run_id = run_id_of(h.asReader());
-    h.setRunId(run_id);
-    logfmt::RecordHeader rh;
-    rh.kind = logfmt::RecordKind::Header;
-    out.submit(rh, message.finish());
   }
 
   void flush_chunk() {
@@ -545,9 +565,8 @@ template <class T>
 LogWriter<T>::~LogWriter() = default;
 
 // The coder's copy of the state is taken at the first keyframe (the engine's rebuild right after on_start,
-// before any event), once that keyframe is written if it is large: so the keyframe's message (44 B/disk)
-// and the copy (40 B/disk) are never alive together, and at N = 1e6 that was the run's peak (216 -> see
-// docs/performance.md). A run whose engine sends no rebuild first (resumed) copies at its first event.
+// before any event), once that keyframe is written if it is large: so the keyframe's message (48 B/disk)
+// and the copy (40 B/disk) are never alive together (docs/performance.md, "Memory at 10⁶ with the log"). A run whose engine sends no rebuild first (resumed) copies at its first event.
 template <class T>
 void LogWriter<T>::on_start(T, const Particles<T>& p) {
   impl_->ensure_coder(p, false);
@@ -569,9 +588,13 @@ template <class T>
 void LogWriter<T>::on_rebuild(const RebuildPoint<T>& point) {
   Impl& w = *impl_;
   w.ensure_coder(point.particles, false);
+  // The first keyframe, when large: the header is written (and freed) before it is built, and it before
+  // the coder's copy is made, so no two of the three are alive at once.
+  const bool first_large = !w.state_ready && point.particles.size() * 5 * kScalarWidth<T> > RecordWriter::kTwoPassAbove;
+  if (first_large) w.out.flush();
   w.write_keyframe(point.particles, point.time, &point);
   if (w.state_ready) return;
-  if (point.particles.size() * 5 * kScalarWidth<T> > RecordWriter::kTwoPassAbove) w.out.flush();  // the keyframe freed first
+  if (first_large) w.out.flush();
   w.ensure_coder(point.particles);
 }
 

@@ -20,7 +20,11 @@ std::uint32_t run_id_of(logschema::Header::Reader header) {
   h.setCompiler("");
   h.setCompileFlags("");
   h.setRunId(0);
-  const kj::Array<capnp::word> canonical = capnp::canonicalize(h.asReader());
+  return run_id_of_cleared(h.asReader());
+}
+
+std::uint32_t run_id_of_cleared(logschema::Header::Reader cleared) {
+  const kj::Array<capnp::word> canonical = capnp::canonicalize(cleared);
   Xxh3Hash hash;
   hash.update(canonical.begin(), canonical.size() * sizeof(capnp::word));
   const auto id = std::uint32_t(std::stoul(hash.hex().substr(0, 8), nullptr, 16));

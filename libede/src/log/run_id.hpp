@@ -24,6 +24,9 @@ class LogReader;
 
 // Never 0 (0 is "not recorded").
 std::uint32_t run_id_of(logschema::Header::Reader header);
+// The same from a header whose engine version, compiler and flags are already empty and whose run id is 0
+// (the log writer builds such a message for it: no copy of a header that is tens of MB at large N).
+std::uint32_t run_id_of_cleared(logschema::Header::Reader cleared);
 
 // Ok if the record's id matches the log's header (or the header records none); else an error naming the
 // file, the record and what to do. `what`: "chunk" or "keyframe".
