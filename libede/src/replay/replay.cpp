@@ -292,10 +292,8 @@ Status Replay<T>::advance(std::uint64_t target_event, const T* until_time,
     if (extras.before || extras.positions) out = ReplayedEvent<T>{};
     out.index = e.index, out.time = e.time, out.kind = e.kind, out.i = e.i, out.j = e.j;
     out.vix = e.vix, out.viy = e.viy, out.vjx = e.vjx, out.vjy = e.vjy, out.wi = e.wi, out.wj = e.wj;
-    if (extras.before)
-      before_event(e, out);
-    else if (e.kind != EventKind::Pair)
-      unchanged_after(e, out);
+    if (extras.before) before_event(e, out);
+    if (e.kind != EventKind::Pair) unchanged_after(e, out);
     if (!apply_event(e, state_, lx_, ly_)) return non_finite_error(e.index);
     ++applied_;
     last_event_time_ = e.time;
@@ -320,16 +318,14 @@ void Replay<T>::before_event(const DecodedEvent<T>& e, ReplayedEvent<T>& out) co
   out.vix0 = state_.vx_at(std::size_t(e.i), e.time), out.viy0 = state_.vy_at(std::size_t(e.i), e.time);
   if (e.kind == EventKind::Pair)
     out.vjx0 = state_.vx_at(std::size_t(e.j), e.time), out.vjy0 = state_.vy_at(std::size_t(e.j), e.time);
-  if (e.kind == EventKind::Wrap) out.vix = out.vix0, out.viy = out.viy0;
   if (!state_.omega.empty()) {
     out.wi0 = state_.omega[std::size_t(e.i)];
     if (e.kind == EventKind::Pair) out.wj0 = state_.omega[std::size_t(e.j)];
-    if (e.kind != EventKind::Pair && e.kind != EventKind::Wall) out.wi = out.wi0;  // unchanged
   }
 }
 
-// Without the velocities before: what an event leaves unchanged still has to be filled in after it (a
-// wrap's velocities; the spin of a disk in a wrap, segment or action event of a rough log).
+// What an event leaves unchanged is filled in after it, with or without the velocities before (a wrap's
+// velocities; the spin of a disk in a wrap, segment or action event of a rough log).
 template <class T>
 void Replay<T>::unchanged_after(const DecodedEvent<T>& e, ReplayedEvent<T>& out) const {
   if (e.i < 0) return;
