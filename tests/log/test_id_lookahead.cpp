@@ -32,7 +32,7 @@ struct Columns {
     partners.varint(wall);
   }
   void action() { kinds.byte(static_cast<unsigned char>(EventKind::Action)); }
-  static ByteReader reader(const ByteWriter& w) { return ByteReader(w.bytes().data(), w.bytes().size()); }
+  static ByteReader reader(const ByteWriter& w) { return ByteReader(w.data(), w.size()); }
   IdLookahead lookahead(std::uint32_t count, std::size_t n) const {
     return IdLookahead(reader(kinds), reader(disks), reader(partners), count, n, kTcElasticFlag);
   }

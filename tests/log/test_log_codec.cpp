@@ -95,7 +95,7 @@ TEST_CASE("varints and zigzag round-trip, overlong and cut varints are refused",
   const u128 values[] = {0, 1, 127, 128, 300, (u128(1) << 64) + 5, ~u128(0)};
   for (const u128 v : values) w.varint(v);
   for (const i128 v : {i128(0), i128(-1), i128(1), -i128(1) << 100, i128(123456789)}) w.varint(zigzag(v));
-  ByteReader r(w.bytes().data(), w.bytes().size());
+  ByteReader r(w.data(), w.size());
   for (const u128 v : values) {
     u128 got = 0;
     REQUIRE(r.varint(got));

@@ -52,9 +52,17 @@ inline T momentum_prediction(T mi, T mj, T vi0, T vj0, T vi1) {
   return ((mi * vi0 + mj * vj0) - mi * vi1) / mj;
 }
 
+// zigzag(key(actual) - key(predicted)). Keys of 64 bits or fewer (float, double) take the difference's
+// magnitude in 64-bit arithmetic (it always fits) and zigzag it as 2|d| or 2|d| - 1: the same value as the
+// 128-bit formula, a quarter of its instructions (it runs ~4 times per event in the log writer).
 template <class T>
-inline u128 residual(T actual, T predicted) {
-  return zigzag(i128(ordered_key(actual)) - i128(ordered_key(predicted)));
+[[gnu::always_inline]] inline u128 residual(T actual, T predicted) {
+  if constexpr (ScalarBytes<T>::kBits <= 64) {
+    const std::uint64_t a = std::uint64_t(ordered_key(actual)), b = std::uint64_t(ordered_key(predicted));
+    return a >= b ? u128(a - b) << 1 : (u128(b - a) << 1) - 1;
+  } else {
+    return zigzag(i128(ordered_key(actual)) - i128(ordered_key(predicted)));
+  }
 }
 
 // Unsigned, wrapping arithmetic: a residual from a corrupted file may be any 128-bit value, and a signed
