@@ -5,8 +5,10 @@
 #include <cstring>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "log/byte_columns.hpp"
+#include "log/chunk_codec.hpp"
 #include "core/crc32.hpp"
 #include "log/log_framing.hpp"
 #include "log/scalar_bytes.hpp"
@@ -114,6 +116,53 @@ TEST_CASE("varints and zigzag round-trip, overlong and cut varints are refused",
   const unsigned char cut[] = {0x80, 0x80};
   ByteReader rc(cut, sizeof cut);
   CHECK_FALSE(rc.varint(v));
+}
+
+TEST_CASE("ByteWriter writes plain LEB128 across its buffer's growth", "[log][codec]") {
+  // The reference: one byte at a time, 7 bits each, low first (what the reader and FORMAT.md expect).
+  const auto leb128 = [](u128 v, std::vector<unsigned char>& out) {
+    do {
+      const unsigned char low = static_cast<unsigned char>(v & 0x7F);
+      v >>= 7;
+      out.push_back(v ? (low | 0x80) : low);
+    } while (v);
+  };
+  ByteWriter w;
+  std::vector<unsigned char> expected;
+  std::uint64_t state = 12345;
+  for (int k = 0; k < 100000; ++k) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    const int bits = int(state >> 57);  // 0..127 significant bits
+    const u128 v = bits == 0 ? 0 : ((u128(state) << 64 | u128(state * 31)) >> (128 - bits));
+    if (k % 7 == 0) {
+      w.byte(static_cast<unsigned char>(k));
+      expected.push_back(static_cast<unsigned char>(k));
+    } else {
+      w.varint(v);
+      leb128(v, expected);
+    }
+  }
+  REQUIRE(w.size() == expected.size());
+  CHECK(w.bytes() == expected);
+  CHECK(std::equal(expected.begin(), expected.end(), w.data()));
+  w.clear();
+  CHECK(w.size() == 0);
+  w.varint(300);
+  CHECK(w.bytes() == std::vector<unsigned char>{0xAC, 0x02});
+}
+
+TEMPLATE_TEST_CASE("residuals of float and double keys equal the 128-bit formula", "[log][codec]", float, double) {
+  using T = TestType;
+  const auto reference = [](T a, T b) { return zigzag(i128(ordered_key(a)) - i128(ordered_key(b))); };
+  const T lim = std::numeric_limits<T>::max(), inf = std::numeric_limits<T>::infinity();
+  const T values[] = {-inf, -lim, T(-1), T(-0.0), T(0), std::numeric_limits<T>::denorm_min(), T(0.5), T(1), lim, inf,
+                      std::numeric_limits<T>::quiet_NaN(), -std::numeric_limits<T>::quiet_NaN()};
+  for (const T a : values)
+    for (const T b : values) CHECK(residual(a, b) == reference(a, b));
+  const T x = T(0.75);
+  CHECK(residual(std::nextafter(x, T(1)), x) == 2);   // +1 in key space
+  CHECK(residual(x, std::nextafter(x, T(1))) == 1);   // -1
+  CHECK(residual(x, x) == 0);
 }
 
 TEST_CASE("byte-plane shuffling round-trips", "[log][codec]") {
