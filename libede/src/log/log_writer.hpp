@@ -31,6 +31,10 @@ struct LogSettings {
   std::uint32_t chunk_events = 16384;          // events per chunk
   int compression_level = 3;                   // zstd level (docs/log-format-choices in docs/performance.md)
   std::uint32_t format_version = 2;            // 2 (predicted columns), or 1 (for ede-replay convert and comparisons)
+  // A keyframe after the first whose state columns exceed this many bytes is written while the coder's copy
+  // of the state is dropped (made again from the engine's state after it): the two are never alive together.
+  // Changes memory and timing, never the bytes (tests set 0 to take that path at any size).
+  std::size_t keyframe_apart_above = std::size_t(8) << 20;
   static LogSettings from(const LogSpec& spec);
 };
 
