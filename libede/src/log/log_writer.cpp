@@ -99,6 +99,9 @@ std::vector<unsigned char> one_scalar(T v) {
 
 }  // namespace
 
+static_assert(LogSettings{}.keyframe_apart_above == RecordWriter::kTwoPassAbove,
+              "later keyframes are written apart from the coder's copy from the size records are written in pieces");
+
 std::uint64_t auto_keyframe_interval(std::size_t disks) {
   return std::max<std::uint64_t>(std::uint64_t(1) << 18, 4 * std::uint64_t(disks));
 }
@@ -430,8 +433,11 @@ struct LogWriter<T>::Impl {
   // run with no keyframe after the first (docs/performance.md, "Later keyframes"). The event loop waits
   // for the keyframe's compression, part of which it waited for anyway once the record writer's queue was
   // full; the chunks' bytes are the same either way.
+  // Bytes of a keyframe's five per-disk state columns (x, y, vx, vy, t): what makes a keyframe "large".
+  static std::size_t state_column_bytes(const Particles<T>& p) { return p.size() * 5 * kScalarWidth<T>; }
+
   void write_later_keyframe(const Particles<T>& p, T time, const RebuildPoint<T>* rebuild) {
-    const bool apart = settings.format_version >= 2 && p.size() * 5 * kScalarWidth<T> > settings.keyframe_apart_above;
+    const bool apart = settings.format_version >= 2 && state_column_bytes(p) > settings.keyframe_apart_above;
     if (!apart) return write_keyframe(p, time, rebuild);
     flush_chunk();
     out.flush();  // the worker is idle, every chunk before this keyframe coded with the copy
@@ -584,8 +590,9 @@ template <class T>
 LogWriter<T>::~LogWriter() = default;
 
 // The coder's copy of the state is taken at the first keyframe (the engine's rebuild right after on_start,
-// before any event), once that keyframe is written if it is large: so the keyframe's message (48 B/disk)
-// and the copy (40 B/disk) are never alive together (docs/performance.md, "Memory at 10⁶ with the log"). A run whose engine sends no rebuild first (resumed) copies at its first event.
+// before any event), once that keyframe is written if it is large: so the keyframe's message (44 B/disk)
+// and the copy (40 B/disk) are never alive together (docs/performance.md, "Memory at 10⁶ with the log"); later
+// keyframes see write_later_keyframe. A run whose engine sends no rebuild first (resumed) copies at its first event.
 template <class T>
 void LogWriter<T>::on_start(T, const Particles<T>& p) {
   impl_->ensure_coder(p, false);
@@ -609,7 +616,7 @@ void LogWriter<T>::on_rebuild(const RebuildPoint<T>& point) {
   w.ensure_coder(point.particles, false);
   // The first keyframe, when large: the header is written (and freed) before it is built, and it before
   // the coder's copy is made, so no two of the three are alive at once.
-  const bool first_large = !w.state_ready && point.particles.size() * 5 * kScalarWidth<T> > RecordWriter::kTwoPassAbove;
+  const bool first_large = !w.state_ready && Impl::state_column_bytes(point.particles) > RecordWriter::kTwoPassAbove;
   if (first_large) w.out.flush();
   if (w.state_ready) return w.write_later_keyframe(point.particles, point.time, &point);
   w.write_keyframe(point.particles, point.time, &point);

@@ -33,7 +33,9 @@ struct LogSettings {
   std::uint32_t format_version = 2;            // 2 (predicted columns), or 1 (for ede-replay convert and comparisons)
   // A keyframe after the first whose state columns exceed this many bytes is written while the coder's copy
   // of the state is dropped (made again from the engine's state after it): the two are never alive together.
-  // Changes memory and timing, never the bytes (tests set 0 to take that path at any size).
+  // Changes memory and timing, never the bytes (tests set 0 to take that path at any size). The default is
+  // the record writer's two-pass size (RecordWriter::kTwoPassAbove), from which a keyframe's message is the
+  // largest thing alive.
   std::size_t keyframe_apart_above = std::size_t(8) << 20;
   static LogSettings from(const LogSpec& spec);
 };
