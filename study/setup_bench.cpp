@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <sstream>
+#include <utility>
 
 #include "core/rng.hpp"
 #include "engine/engine.hpp"
@@ -32,25 +33,27 @@ std::uint64_t digest(const std::vector<double>& x, const std::vector<double>& y)
 }
 
 // place_random in the unit periodic box; CPU seconds, the positions' digest and the bitmap's bytes.
-double time_placement(std::uint64_t n, const SetupPlan& plan, bool voxels, std::uint64_t& hash, double& bytes) {
+double time_placement(std::uint64_t n, const SetupPlan& plan, bool voxels, std::uint64_t& hash, double& bytes,
+                      RandomSampling sampling = RandomSampling::Region) {
   const double r = std::sqrt(plan.packing_fraction / (double(n) * kPi));
   std::vector<double> radii(n, r), x, y;
   const double cpu0 = thread_cpu_seconds();
   setup_detail::PlacementGrid grid(1, 1, true, 2 * r, n);
   if (voxels) grid.enable_blocked_voxels(r, r);
   Rng rng(plan.seed);
-  const Status st = setup_detail::place_random({{0, 0, 1, 1}, 1, 1, true}, radii, grid, rng, x, y);
+  const Status st = setup_detail::place_random({{0, 0, 1, 1}, 1, 1, true, {}, sampling}, radii, grid, rng, x, y);
   const double cpu = thread_cpu_seconds() - cpu0;
   bytes = double(grid.blocked_voxels().bytes());
   hash = st ? digest(x, y) : 0;
   return st ? cpu : -1;
 }
 
-std::string scene_text(std::uint64_t n, const SetupPlan& plan) {
+// The benchmark's scene with the given placement lines ("kind = ..." and its keys).
+std::string scene_text(std::uint64_t n, const SetupPlan& plan, const std::string& placement) {
   std::ostringstream s;
   s.precision(17);
   s << "seed = " << plan.seed << "\n[box]\nsize = [1.0, 1.0]\nboundary = \"periodic\"\n[[species]]\nname = \"gas\"\n"
-    << "count = " << n << "\n[species.placement]\nkind = \"random\"\npacking_fraction = " << plan.packing_fraction
+    << "count = " << n << "\n[species.placement]\n" << placement << "\npacking_fraction = " << plan.packing_fraction
     << "\n[species.velocity]\nkind = \"speed\"\nspeed = 1.0\n[stop]\nevents = 1\n";
   return s.str();
 }
@@ -66,8 +69,21 @@ int measure_in_child(std::uint64_t n, const SetupPlan& plan, std::string& out) {
   if (plan.naive) {
     o << " naive=" << time_placement(n, plan, false, naive_hash, unused) << " same=" << (hash == naive_hash);
   }
+  std::uint64_t free_hash = 0;
+  o << " free_voxels=" << time_placement(n, plan, true, free_hash, unused, RandomSampling::FreeVoxels);
+  // The whole setup of the other starts (free-voxel sampling, a hexagonal lattice), then the default's, whose
+  // engine is started.
+  using Start = std::pair<const char*, const char*>;
+  for (const auto& [key, placement] : {Start{"setup_free", "kind = \"random\"\nsampling = \"free-voxels\""},
+                                       Start{"setup_lattice", "kind = \"lattice\""}}) {
+    auto scene = parse_scene_text(scene_text(n, plan, placement), "setup-bench.toml");
+    if (!scene) return out = scene.error().message, 1;
+    const double start = thread_cpu_seconds();
+    if (auto initial = build_initial_state(scene.value()); !initial) return out = initial.error().message, 1;
+    o << " " << key << "=" << (thread_cpu_seconds() - start);
+  }
   const double cpu0 = thread_cpu_seconds();
-  auto scene = parse_scene_text(scene_text(n, plan), "setup-bench.toml");
+  auto scene = parse_scene_text(scene_text(n, plan, "kind = \"random\""), "setup-bench.toml");
   if (!scene) return out = scene.error().message, 1;
   auto initial = build_initial_state(scene.value());
   if (!initial) return out = initial.error().message, 1;
@@ -96,6 +112,9 @@ std::vector<SetupRow> measure_setup(const SetupPlan& plan) {
     row.same_positions = !plan.naive || get(m.values, "same") == 1;
     row.voxel_bytes = get(m.values, "voxel_bytes");
     row.setup = get(m.values, "setup");
+    row.free_voxel_placement = get(m.values, "free_voxels");
+    row.setup_free_voxels = get(m.values, "setup_free");
+    row.setup_lattice = get(m.values, "setup_lattice");
     row.engine_start = get(m.values, "engine_start");
     row.peak_rss = m.peak_rss;
     rows.push_back(row);

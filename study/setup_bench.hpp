@@ -6,7 +6,9 @@
 // (the path before it, kept selectable as the naive baseline), both from the same seed, their CPU times and
 // a digest of the placed positions (they must be equal: same draws, same decisions); then the whole start
 // of a run: scene text -> setup (placement, curve order, velocities, overlap check) -> engine with its first
-// predictions. CPU time of the measuring thread, which another job on the machine disturbs less than wall.
+// predictions. Beside them, for comparison: placement and setup with sampling = "free-voxels" (other positions,
+// the same law), and setup from a hexagonal lattice (the peers' start). CPU time of the measuring thread, which
+// another job on the machine disturbs less than wall.
 // Rejected: timing `ede-sim` from outside (scene loading, log header and process start mixed in).
 #pragma once
 
@@ -31,6 +33,8 @@ struct SetupRow {
   bool same_positions = false;                // the two placements' digests agree (true if naive skipped)
   double voxel_bytes = 0;                     // the bitmap's size
   double setup = 0, engine_start = 0;         // CPU s: build_initial_state; make_engine + first predictions
+  double free_voxel_placement = 0;            // CPU s of place_random with sampling = "free-voxels"
+  double setup_free_voxels = 0, setup_lattice = 0;  // CPU s of build_initial_state for those starts
   double peak_rss = 0;                        // bytes, the child's
 };
 

@@ -72,7 +72,8 @@ std::string dump(const Scene& s) {
       << num(sp.placement.region.y0) << " " << num(sp.placement.region.x1) << " "
       << num(sp.placement.region.y1) << " "
       << (sp.placement.packing_fraction ? num(*sp.placement.packing_fraction) : "-") << " "
-      << static_cast<int>(sp.placement.lattice) << " v " << static_cast<int>(sp.velocity.kind) << " "
+      << static_cast<int>(sp.placement.lattice) << " " << static_cast<int>(sp.placement.sampling) << " v "
+      << static_cast<int>(sp.velocity.kind) << " "
       << num(sp.velocity.speed) << " " << num(sp.velocity.vector[0]) << " " << num(sp.velocity.vector[1])
       << " " << num(sp.velocity.temperature) << "\n";
     for (auto [x, y] : sp.placement.positions) o << " at " << num(x) << " " << num(y);
@@ -104,6 +105,7 @@ density = 2.0
 [species.placement]
 kind = "random"
 region = [0.0, 0.0, 1.0, 1.5]
+sampling = "free-voxels"
 [species.velocity]
 kind = "maxwell"
 temperature = 0.5
@@ -169,6 +171,7 @@ TEST_CASE("scene loader: a full scene gives exactly the Scene it describes", "[s
   CHECK(gas.placement.kind == ede::PlacementKind::Random);
   CHECK(gas.placement.region.x1 == 1.0);
   CHECK(gas.placement.region.y1 == 1.5);
+  CHECK(gas.placement.sampling == ede::RandomSampling::FreeVoxels);
   CHECK(gas.velocity.kind == ede::VelocityKind::Maxwell);
   CHECK(gas.velocity.temperature == 0.5);
 
@@ -227,6 +230,7 @@ TEST_CASE("scene loader: defaults", "[scene]") {
   CHECK(a.placement.region.y1 == 1.0);
   CHECK_FALSE(a.placement.packing_fraction);
   CHECK(a.placement.lattice == ede::LatticeKind::Hexagonal);
+  CHECK(a.placement.sampling == ede::RandomSampling::Region);
   CHECK(a.velocity.kind == ede::VelocityKind::Zero);
   CHECK(s.stop.events == 100u);
   CHECK_FALSE(s.stop.time);
@@ -497,6 +501,12 @@ TEST_CASE("scene loader: keys of another kind are errors", "[scene][errors]") {
   msg = error_of(
       with(kBase, "[species.velocity]", "[species.placement]\npacking_fraction = 0.95\n[species.velocity]"));
   CHECK_THAT(msg, Contains("species[0].placement.packing_fraction (species 'gas'): must be in (0, 0.9069]"));
+  msg = error_of(with(kBase, "[species.velocity]",
+                      "[species.placement]\nkind = \"lattice\"\nsampling = \"free-voxels\"\n[species.velocity]"));
+  CHECK_THAT(msg, Contains("species[0].placement.sampling (species 'gas'): not used with kind = \"lattice\""));
+  msg = error_of(with(kBase, "[species.velocity]", "[species.placement]\nsampling = \"voxels\"\n[species.velocity]"));
+  CHECK_THAT(msg, Contains("species[0].placement.sampling"));
+  CHECK_THAT(msg, Contains("free-voxels"));
   msg = error_of(with(kBase, "count = 10", "count = 10\nmass = 1\ndensity = 2"));
   CHECK_THAT(msg, Contains("species[0].density (species 'gas'): both mass and density"));
 }

@@ -87,6 +87,11 @@ TEST_CASE("ede-bench setup: a row per N, the blocked voxels placing what the gri
   const std::vector<std::string> rows = lines(read_file(csv));
   REQUIRE(rows.size() == 3);
   CHECK(rows[2].rfind("3000,", 0) == 0);
+  // The other starts beside the default: free-voxel sampling and a lattice, each timed (> 0 s).
+  REQUIRE(rows[0].find(",free_voxel_placement_s,setup_free_voxels_s,setup_lattice_s") != std::string::npos);
+  const std::vector<std::string> fields = csv_fields(rows[2]);
+  REQUIRE(fields.size() == 11);
+  for (std::size_t k = 8; k < 11; ++k) CHECK(std::stod(fields[k]) > 0);
   CHECK(run_tool("ede-bench", "setup --packing-fraction 0.6", "bench-setup-phi").status == 2);
 }
 

@@ -26,11 +26,12 @@ int run_setup(SetupOptions& o) {
   const std::vector<study::SetupRow> rows = study::measure_setup(o.plan);
   std::printf("Equal disks at packing fraction %s in a periodic unit box; CPU seconds of the measuring thread, one "
               "run each.\n\n| N | placement s | grid-only placement s | speed-up | same positions | voxel map B/disk "
-              "| setup s (all) | engine start s | peak RSS B/disk |\n|---:|---:|---:|---:|---|---:|---:|---:|---:|\n",
+              "| setup s (all) | engine start s | peak RSS B/disk | free-voxel placement s | setup s, free voxels "
+              "| setup s, lattice |\n|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|\n",
               fmt(o.plan.packing_fraction).c_str());
   std::ostringstream csv;
   csv << "disks,placement_s,naive_placement_s,same_positions,voxel_bytes_per_disk,setup_s,engine_start_s,"
-         "peak_rss_bytes_per_disk\n";
+         "peak_rss_bytes_per_disk,free_voxel_placement_s,setup_free_voxels_s,setup_lattice_s\n";
   int status = 0;
   for (const study::SetupRow& r : rows) {
     if (!r.ok) {
@@ -40,13 +41,16 @@ int run_setup(SetupOptions& o) {
     }
     if (!r.same_positions) status = 1;
     const bool naive = o.plan.naive;
-    std::printf("| %.0f | %s | %s | %s | %s | %s | %s | %s | %s |\n", r.disks, fmt(r.placement, 3).c_str(),
-                naive ? fmt(r.naive_placement, 3).c_str() : "-",
+    std::printf("| %.0f | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", r.disks,
+                fmt(r.placement, 3).c_str(), naive ? fmt(r.naive_placement, 3).c_str() : "-",
                 naive && r.placement > 0 ? (fmt(r.naive_placement / r.placement, 3) + "x").c_str() : "-",
                 naive ? (r.same_positions ? "yes" : "NO") : "-", fmt(r.voxel_bytes / r.disks, 3).c_str(),
-                fmt(r.setup, 3).c_str(), fmt(r.engine_start, 3).c_str(), fmt(r.peak_rss / r.disks, 3).c_str());
+                fmt(r.setup, 3).c_str(), fmt(r.engine_start, 3).c_str(), fmt(r.peak_rss / r.disks, 3).c_str(),
+                fmt(r.free_voxel_placement, 3).c_str(), fmt(r.setup_free_voxels, 3).c_str(),
+                fmt(r.setup_lattice, 3).c_str());
     csv << r.disks << "," << r.placement << "," << r.naive_placement << "," << r.same_positions << ","
-        << r.voxel_bytes / r.disks << "," << r.setup << "," << r.engine_start << "," << r.peak_rss / r.disks << "\n";
+        << r.voxel_bytes / r.disks << "," << r.setup << "," << r.engine_start << "," << r.peak_rss / r.disks << ","
+        << r.free_voxel_placement << "," << r.setup_free_voxels << "," << r.setup_lattice << "\n";
   }
   if (!o.csv_path.empty() && !write_file(o.csv_path, csv.str())) return 1;
   return status;

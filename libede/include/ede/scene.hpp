@@ -48,12 +48,17 @@ struct MassSpec {
 
 enum class PlacementKind { Random, Lattice, Explicit };
 enum class LatticeKind { Hexagonal, Square };
+// How random placement draws its candidates (both are random sequential addition, the same law of the
+// placed positions): over the whole region (the default, the positions of every earlier version), or, once
+// most of the region is blocked, only from voxels not yet wholly blocked (faster near jamming, other positions).
+enum class RandomSampling { Region, FreeVoxels };
 
 struct PlacementSpec {
   PlacementKind kind = PlacementKind::Random;
   Region region;                            // random and lattice: where the disks go (whole disks inside)
   std::optional<double> packing_fraction;   // random and lattice: sets the radius (count disks fill it)
   LatticeKind lattice = LatticeKind::Hexagonal;
+  RandomSampling sampling = RandomSampling::Region;  // random only
   std::vector<std::array<double, 2>> positions;  // explicit: one [x, y] per disk
 };
 

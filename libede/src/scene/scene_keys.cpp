@@ -32,7 +32,8 @@ constexpr std::string_view kSpeciesKeys[] = {"name",    "count",     "radius",  
                                              "density", "placement", "velocity", "inertia_factor",
                                              "omega",   "spin_temperature"};
 constexpr std::string_view kRadiusKeys[] = {"min", "max"};
-constexpr std::string_view kPlacementKeys[] = {"kind", "region", "packing_fraction", "lattice", "positions"};
+constexpr std::string_view kPlacementKeys[] = {"kind", "region", "packing_fraction", "lattice", "sampling",
+                                               "positions"};
 constexpr std::string_view kVelocityKeys[] = {"kind", "speed", "vector", "temperature", "values"};
 constexpr std::string_view kGrowKeys[] = {"packing_fraction", "pressure", "rate"};
 constexpr std::string_view kStopKeys[] = {"time", "events", "collisions_per_particle", "energy_fraction"};

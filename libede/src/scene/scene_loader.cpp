@@ -273,6 +273,7 @@ PlacementSpec read_placement(const Reader& sp, const Scene& scene) {
   reject_unless(p, "region", k != 2, kNames[k], "\"random\" and \"lattice\"");
   reject_unless(p, "packing_fraction", k != 2, kNames[k], "\"random\" and \"lattice\"");
   reject_unless(p, "lattice", k == 1, kNames[k], "\"lattice\"");
+  reject_unless(p, "sampling", k == 0, kNames[k], "\"random\"");
   reject_unless(p, "positions", k == 2, kNames[k], "\"explicit\"");
   PlacementSpec out;
   out.kind = kKinds[k];
@@ -281,6 +282,8 @@ PlacementSpec read_placement(const Reader& sp, const Scene& scene) {
                                   "use a fraction of the region's area in (0, 0.9069]");
   out.lattice = p.choice("lattice", {"hexagonal", "square"}).value_or(0) == 0 ? LatticeKind::Hexagonal
                                                                               : LatticeKind::Square;
+  out.sampling = p.choice("sampling", {"region", "free-voxels"}).value_or(0) == 0 ? RandomSampling::Region
+                                                                                  : RandomSampling::FreeVoxels;
   if (out.kind == PlacementKind::Explicit) {
     auto positions = p.pairs("positions", "[x, y]");
     if (!positions) {

@@ -10,8 +10,9 @@
 // mark is never wrong; they only leave a few boundary voxels unmarked, which then fall through to the grid.
 // Voxels are an eighth of the exclusion radius wide (at most 128 per expected disk: 16 bytes per disk
 // while placing, freed with the grid; 12.6 B/disk for equal disks at phi = 0.5).
-// Rejected: sampling only from free voxels (exact placement needs the same rng draws, so every candidate must
-// still be drawn and judged) and a byte per voxel (8x the memory, more cache misses at 10^6 disks).
+// Sampling only from free voxels cannot keep the default's positions (every candidate must be drawn and judged
+// to repeat its rng draws); it is offered as a scene's choice instead (free_voxel_list.hpp).
+// Rejected: a byte per voxel (8x the memory, more cache misses at 10^6 disks).
 #pragma once
 
 #include <algorithm>
@@ -51,8 +52,7 @@ class BlockedVoxels {
     if (bits_.empty()) return false;
     const std::int64_t ix = index(x, inv_wx_, nx_), iy = index(y, inv_wy_, ny_);
     if ((ix | iy) < 0) return false;
-    const std::int64_t v = iy * nx_ + ix;
-    return (bits_[std::size_t(v >> 6)] >> (v & 63)) & 1;
+    return marked(code(ix, iy));
   }
 
   // Marks the voxels wholly inside the exclusion zone of a disk at (x, y) of radius r.
@@ -78,6 +78,25 @@ class BlockedVoxels {
   }
 
   std::size_t bytes() const { return bits_.capacity() * sizeof(std::uint64_t); }
+
+  // The voxel grid and its marks, read by FreeVoxelList (free_voxel_list.hpp). Voxel (ix, iy) covers
+  // [ix * wx, (ix + 1) * wx) x [iy * wy, (iy + 1) * wy); its code iy * nx + ix is its bit's index in the map,
+  // so word w holds codes 64 w to 64 w + 63.
+  std::int64_t voxels_x() const { return nx_; }
+  std::int64_t voxels_y() const { return ny_; }
+  double inverse_voxel_width() const { return inv_wx_; }
+  double inverse_voxel_height() const { return inv_wy_; }
+  std::size_t words() const { return bits_.size(); }
+  std::uint64_t word(std::size_t w) const { return bits_[w]; }
+  std::int64_t code(std::int64_t ix, std::int64_t iy) const { return iy * nx_ + ix; }
+  void voxel_of(std::int64_t code, std::int64_t& ix, std::int64_t& iy) const {
+    ix = code % nx_;
+    iy = code / nx_;
+  }
+  bool marked(std::int64_t code) const { return (bits_[std::size_t(code >> 6)] >> (code & 63)) & 1; }
+  // A point uniform in voxel (ix, iy) from two uniform01 values.
+  double voxel_x(std::int64_t ix, double u) const { return (double(ix) + u) * wx_; }
+  double voxel_y(std::int64_t iy, double u) const { return (double(iy) + u) * wy_; }
 
  private:
   static constexpr double kMargin = 1e-6;

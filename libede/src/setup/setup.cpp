@@ -242,7 +242,7 @@ Status place_species(const Scene& scene, std::size_t k, PlacementGrid& grid, Rng
   switch (s.placement.kind) {
     case PlacementKind::Random:
     {
-      setup_detail::RandomPlacement where{s.placement.region, scene.lx, scene.ly, periodic, {}};
+      setup_detail::RandomPlacement where{s.placement.region, scene.lx, scene.ly, periodic, {}, s.placement.sampling};
       for (const SegmentSpec& g : scene.physics.segments)
         where.segments.push_back(make_segment(g.from[0], g.from[1], g.to[0], g.to[1], g.restitution));
       st = setup_detail::place_random(where, d.r, grid, rng, d.x, d.y);

@@ -28,6 +28,9 @@ struct RandomPlacement {
   // Wall segments: a candidate touching one is rejected like one overlapping a disk (an attempt spent, no
   // extra draws, so scenes without segments draw exactly what they did before segments existed).
   std::vector<Segment<double>> segments;
+  // Candidates from the voxels not yet wholly blocked once most of the region is (free_voxel_list.hpp): the
+  // same law of positions, other positions than the default's draws over the whole region.
+  RandomSampling sampling = RandomSampling::Region;
 };
 
 // The attempt budget for `count` disks: max(10^6, 2000 * count).
