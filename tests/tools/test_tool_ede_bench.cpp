@@ -65,15 +65,23 @@ TEST_CASE("ede-bench peers: a row per scene, log on and off after the warm-up, t
   const std::string scene = source_path("examples/bench/gas-N1000-phi0.5-periodic.toml");
   const std::string csv = temp_path("bench-peers.csv");
   const ToolRun r = run_tool("ede-bench",
-                             "peers " + scene + " --repeat 1 --warmup 2 --segment 2 --tmp-dir " + std::string(EDE_BINARY_DIR) + "/tests" +
+                             "peers " + scene + " --repeat 1 --warmup 2 --segment 2 --min-timed 0 --tmp-dir " + std::string(EDE_BINARY_DIR) + "/tests" +
                                  " -o " + csv,
                              "bench-peers", 120);
   INFO(r.out << r.err);
   REQUIRE(r.status == 0);
-  CHECK(r.out.find("| gas-N1000-phi0.5-periodic | 1000 | ") != std::string::npos);
+  CHECK(r.out.find("| gas-N1000-phi0.5-periodic | 1000 | 2 | ") != std::string::npos);
   const std::vector<std::string> rows = lines(read_file(csv));
   REQUIRE(rows.size() == 2);
-  CHECK(rows[1].rfind("gas-N1000-phi0.5-periodic,1000,", 0) == 0);
+  CHECK(rows[1].rfind("gas-N1000-phi0.5-periodic,1000,2,", 0) == 0);
+  // --min-timed stretches the segment of a small system: 10^4 pair collisions of 1000 disks are 20 per disk.
+  const ToolRun longer = run_tool("ede-bench",
+                                  "peers " + scene + " --repeat 1 --warmup 2 --segment 2 --min-timed 10000 --tmp-dir " +
+                                      std::string(EDE_BINARY_DIR) + "/tests",
+                                  "bench-peers-min-timed", 120);
+  INFO(longer.out << longer.err);
+  REQUIRE(longer.status == 0);
+  CHECK(longer.out.find("| gas-N1000-phi0.5-periodic | 1000 | 20 | ") != std::string::npos);
   CHECK(run_tool("ede-bench", "peers " + scene + " --segment 0", "bench-peers-segment").status == 2);
 }
 
