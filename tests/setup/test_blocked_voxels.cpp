@@ -45,7 +45,7 @@ Placed place(std::vector<double> radii, bool periodic, bool voxels, std::uint64_
   if (voxels) grid.enable_blocked_voxels(r_min, r_sum / double(radii.size()));
   Rng rng(seed);
   Placed p;
-  p.ok = bool(place_random({{0, 0, 1, 1}, 1, 1, periodic}, radii, grid, rng, p.x, p.y));
+  p.ok = bool(place_random({{0, 0, 1, 1}, 1, 1, periodic, {}, RandomSampling::Region}, radii, grid, rng, p.x, p.y));
   p.r = radii;
   p.rng_after = rng.state();
   return p;
