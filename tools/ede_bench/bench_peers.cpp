@@ -2,8 +2,8 @@
 //                 [-o FILE.csv]
 // The table the published event-driven codes are compared on (issue 15; docs/performance.md, "Against the
 // peers"): pair collisions per wall-clock second over a steady segment (after --warmup collisions per disk,
-// then --segment more, but at least --min-timed pair collisions in all), ede with the log off and on, medians of --repeat rounds in which every case runs
-// once per configuration (interleaved, so a busy machine disturbs both alike), and the log's cost as the
+// then --segment more, but at least --min-timed pair collisions in all), ede with the log off and on,
+// medians of --repeat rounds in which every case runs once per configuration (interleaved, so a busy machine disturbs both alike), and the log's cost as the
 // median of the per-round ratios. The peers themselves are built and run outside the repository
 // (docs/performance.md says how); their numbers go beside these.
 // Each run is its own process (study/log_measure.hpp: run_measured), so peak RSS is per run.

@@ -425,6 +425,9 @@ struct LogWriter<T>::Impl {
     chunk_first = logged;
   }
 
+  // Bytes of a keyframe's five per-disk state columns (x, y, vx, vy, t): what makes a keyframe "large".
+  static std::size_t state_column_bytes(const Particles<T>& p) { return p.size() * 5 * kScalarWidth<T>; }
+
   // Every keyframe after the coder's copy exists. A large one is written apart from that copy: the worker
   // first codes every chunk before it, the copy (40 B/disk) is dropped, the keyframe's message (44 B/disk)
   // is built, written and freed, and the copy is made again from the engine's state, which is the state
@@ -433,8 +436,6 @@ struct LogWriter<T>::Impl {
   // run with no keyframe after the first (docs/performance.md, "Later keyframes"). The event loop waits
   // for the keyframe's compression, part of which it waited for anyway once the record writer's queue was
   // full; the chunks' bytes are the same either way.
-  // Bytes of a keyframe's five per-disk state columns (x, y, vx, vy, t): what makes a keyframe "large".
-  static std::size_t state_column_bytes(const Particles<T>& p) { return p.size() * 5 * kScalarWidth<T>; }
 
   void write_later_keyframe(const Particles<T>& p, T time, const RebuildPoint<T>* rebuild) {
     const bool apart = settings.format_version >= 2 && state_column_bytes(p) > settings.keyframe_apart_above;

@@ -7,12 +7,13 @@
 // rectangle that was unmarked when it was made, and marks only grow, so every point where a disk could still
 // go is in that union; the usual overlap test then accepts exactly the free points, each with the same
 // density. A voxel marked since the list was made holds no free point (blocked_voxels.hpp: a mark is never
-// wrong), so drawing it is a rejection; when more than half of the recent draws were such, the list is
+// wrong), so drawing it is a rejection; when more than a quarter of the recent draws were such, the list is
 // compacted. Voxels are equal in size, so no weighting is needed.
 // Rejected: Zhang and Torquato's subdivision of partly free voxels (at an eighth of the exclusion radius about
 // half of a listed voxel's candidates are accepted at phi = 0.5 already; finer levels cost memory and code).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -38,8 +39,7 @@ class FreeVoxelList {
     ix1 = std::min<std::int64_t>(ix1, nx - 1);
     iy1 = std::min<std::int64_t>(iy1, ny - 1);
     if (ix0 > ix1 || iy0 > iy1) return true;
-    // Word by word over the tile rows that hold rows iy0..iy1: the unmarked bits are few once the list is
-    // worth making.
+    // Word by word over the map's rows iy0..iy1: the unmarked bits are few once the list is worth making.
     const std::size_t first = std::size_t(map.code(0, iy0) >> 6), last = std::size_t(map.code(nx - 1, iy1) >> 6);
     for (std::size_t w = first; w <= last; ++w) {
       std::uint64_t free = ~map.word(w);
@@ -55,7 +55,6 @@ class FreeVoxelList {
   }
 
   std::size_t size() const { return voxels_.size(); }
-  std::size_t bytes() const { return voxels_.capacity() * sizeof(std::uint32_t); }
 
   // One candidate (size() > 0): draws below(size()), then uniform01() for x and for y. Returns false if the
   // voxel drawn was marked since the list was made: no free point there, a rejected candidate.
@@ -74,9 +73,9 @@ class FreeVoxelList {
     return true;
   }
 
-  // Drops the voxels marked since the list was made, once more than half of at least 256 draws hit such.
-  // Each compaction at least about halves the list, so all of them together cost about two passes over the
-  // first list.
+  // Drops the voxels marked since the list was made, once more than a quarter of at least 256 draws hit such.
+  // Each compaction removes about a quarter of the list or more, so all of them together cost a few passes
+  // over the first list.
   void compact_if_stale() {
     if (draws_ < 256 || 4 * stale_ <= draws_) return;
     std::size_t kept = 0;
