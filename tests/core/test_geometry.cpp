@@ -4,9 +4,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
+#include <limits>
 #include <vector>
 
 #include "core/geometry.hpp"
+#include "core/rng.hpp"
+#include "core/scalar_math.hpp"
 #include "study/textbook_contact.hpp"
 
 using namespace ede;
@@ -80,6 +84,62 @@ TEST_CASE("pair_contact_time: grazing contacts", "[geometry]") {
   const double outside = pair_contact_time(x0, s * (1 + 1e-9), -1.0, 0.0, s);
   CHECK(inside == Approx(x0 - s * std::sqrt(2e-9)).epsilon(1e-6));
   CHECK(outside == kNever<double>);
+}
+
+// The neighbour scan's branch-free root must give exactly the branching root's bits for every input, or
+// the logs would change: random pairs (approaching, receding, missing, overlapping), the boundaries of each
+// test (b = 0, b^2 at the noise floor, c = 0, d = 0) and non-finite inputs, in float and double.
+template <class T>
+static void check_select_matches(T dx, T dy, T dvx, T dvy, T s, T noise, int& compared) {
+  const T branching = pair_contact_time(dx, dy, dvx, dvy, s, noise);
+  const T selected = pair_contact_time_select(dx, dy, dvx, dvy, s, noise);
+  ++compared;
+  if (std::memcmp(&branching, &selected, sizeof(T)) != 0) {
+    FAIL_CHECK("dx " << dx << " dy " << dy << " dv " << dvx << " " << dvy << " s " << s << " noise " << noise
+                     << ": " << branching << " vs " << selected);
+  }
+}
+
+template <class T>
+static void check_select_on_random_pairs() {
+  Rng rng(20261126);
+  int compared = 0;
+  const T noises[] = {T(0), b_noise2_for(T(40)), T(1e-3)};
+  for (int n = 0; n < 200000; ++n) {
+    const T s = T(0.01 + rng.uniform01());
+    const T dx = T(rng.uniform(-3, 3)), dy = T(rng.uniform(-3, 3));
+    const T dvx = T(rng.uniform(-2, 2)), dvy = T(rng.uniform(-2, 2));
+    check_select_matches(dx, dy, dvx, dvy, s, noises[n % 3], compared);
+  }
+  const T inf = std::numeric_limits<T>::infinity(), nan = std::numeric_limits<T>::quiet_NaN();
+  const T special[] = {T(0), T(-0.0), T(1), T(-1), T(0.5), T(-0.5), T(1e-30), T(-1e-30), inf, -inf, nan};
+  for (const T dx : special)
+    for (const T dy : special)
+      for (const T dvx : special)
+        for (const T dvy : special)
+          for (const T noise : {T(0), T(0.25)}) check_select_matches(dx, dy, dvx, dvy, T(0.5), noise, compared);
+  // b = 0 exactly (sideways), c = 0 exactly (touching), d = 0 exactly (grazing: dy = s, dvx = -1, dvy = 0),
+  // and b^2 exactly at the floor (b = -1, a = 1: b^2 = noise * a for noise = 1).
+  check_select_matches(T(1), T(0), T(0), T(1), T(0.5), T(0), compared);
+  check_select_matches(T(0.5), T(0), T(-1), T(0), T(0.5), T(0), compared);
+  check_select_matches(T(1), T(0.5), T(-1), T(0), T(0.5), T(0), compared);
+  check_select_matches(T(1), T(0), T(-1), T(0), T(0.5), T(1), compared);
+  check_select_matches(T(1), T(0), T(-1), T(0), T(0.5), std::nextafter(T(1), T(0)), compared);
+  CHECK(compared == 200000 + 11 * 11 * 11 * 11 * 2 + 5);
+}
+
+TEST_CASE("pair_contact_time_select: the same bits as pair_contact_time", "[geometry]") {
+  check_select_on_random_pairs<double>();
+  check_select_on_random_pairs<float>();
+}
+
+TEST_CASE("select_value: picks a or b by the condition, bit for bit", "[geometry]") {
+  CHECK(select_value(true, 1.5, -2.0) == 1.5);
+  CHECK(select_value(false, 1.5, -2.0) == -2.0);
+  CHECK(std::signbit(select_value(true, -0.0, 0.0)));
+  CHECK(std::isnan(select_value(false, 1.0f, std::numeric_limits<float>::quiet_NaN())));
+  CHECK(select_value(true, std::numeric_limits<double>::infinity(), 0.0) == std::numeric_limits<double>::infinity());
+  CHECK(select_value(false, 3.0L, 4.0L) == 4.0L);
 }
 
 TEST_CASE("time_to_reach: towards, away, at rest, past the line", "[geometry]") {

@@ -13,9 +13,12 @@
 // serves, and a second arithmetic to trust).
 #pragma once
 
+#include <bit>
 #include <cmath>
 #include <concepts>
+#include <cstdint>
 #include <limits>
+#include <type_traits>
 
 #if EDE_HAVE_FLOAT128
 #include <quadmath.h>
@@ -25,6 +28,20 @@ namespace ede {
 
 template <class T>
 struct scalar_limits : std::numeric_limits<T> {};
+
+// c ? a : b without a branch for float and double: both values are ready and one is picked by a bit
+// mask, so a coin-flip condition costs no misprediction (GCC turns a plain ?: on doubles back into a
+// jump). Other types use ?: (they are not the fast engines).
+template <class T>
+inline T select_value(bool c, T a, T b) {
+  if constexpr (std::is_same_v<T, double> || std::is_same_v<T, float>) {
+    using Bits = std::conditional_t<sizeof(T) == 8, std::uint64_t, std::uint32_t>;
+    const Bits mask = Bits(0) - Bits(c);
+    return std::bit_cast<T>(Bits((std::bit_cast<Bits>(a) & mask) | (std::bit_cast<Bits>(b) & ~mask)));
+  } else {
+    return c ? a : b;
+  }
+}
 
 template <std::floating_point T>
 inline T sqrt(T x) { return std::sqrt(x); }

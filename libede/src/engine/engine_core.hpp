@@ -19,6 +19,7 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "engine/big_disks.hpp"
@@ -431,6 +432,9 @@ class Engine final : public EngineApi<T> {
     }
   }
 
+  // Straight-line contacts with the library's root are tested without branches (consider_pair).
+  static constexpr bool kSelectPairs = !kGravity && std::is_same_v<Contact, StableContact>;
+
   // Disk i (at pi with velocity vi, now) against disk k's image shifted by (sx, sy): keeps the earlier.
   [[gnu::always_inline]] void consider_pair(std::int32_t i, Position2<T> pi, Position2<T> vi, std::int32_t k, T sx,
                                            T sy, Candidate<T>& best) const {
@@ -440,10 +444,24 @@ class Engine final : public EngineApi<T> {
       const Position2<T> pk = pos_at(dk);
       if (just_collided(i, k, (pk.x + sx) - pi.x, (pk.y + sy) - pi.y)) return;
     }
-    const T t = pair_time(di, pi, vi, dk, sx, sy);
-    if (t > best.time) return;
-    const Candidate<T> c{t, EventKind::Pair, k};
-    if (c.before(best)) best = c;
+    if constexpr (kSelectPairs) {
+      // Without branches on the data (pair_contact_time_select): Candidate::before spelled out as selects
+      // for a pair candidate {t, Pair, k}, so the winner is the same as the branching version's. (Letting
+      // disk i itself through, masked here, instead of scan_3x3's test was 7 % slower at 10^4 disks.)
+      const Position2<T> pk = position_at(dk, now_);
+      const T t = now_ + pair_contact_time_select((pk.x + sx) - pi.x, (pk.y + sy) - pi.y, dk.vx - di.vx,
+                                                  dk.vy - di.vy, di.r + dk.r, b_noise2_);
+      const bool tie_won = (best.kind != EventKind::Pair) | (k < best.partner);
+      const bool better = (t < best.time) | ((t == best.time) & tie_won);
+      best.time = select_value(better, t, best.time);
+      best.partner = better ? k : best.partner;
+      best.kind = better ? EventKind::Pair : best.kind;
+    } else {
+      const T t = pair_time(di, pi, vi, dk, sx, sy);
+      if (t > best.time) return;
+      const Candidate<T> c{t, EventKind::Pair, k};
+      if (c.before(best)) best = c;
+    }
   }
 
   // Best pair candidate of disk i against the disks of cell (cx, cy).
