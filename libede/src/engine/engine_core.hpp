@@ -128,6 +128,7 @@ class Engine final : public EngineApi<T> {
       gy_ = p_.gy = T(options.physics.gravity[1]);
     }
     b_noise2_ = b_noise2_for(std::max(lx_, ly_));
+    select_pairs_ = init.size() <= options.branch_free_scan_up_to;
     grid_.reset(shape.nx, shape.ny, lx_, ly_, p_.disk);
     find_big_disks(init, shape.split);
     if constexpr (kSegments) setup_segments(options.physics, init, shape);
@@ -432,7 +433,8 @@ class Engine final : public EngineApi<T> {
     }
   }
 
-  // Straight-line contacts with the library's root are tested without branches (consider_pair).
+  // Straight-line contacts with the library's root can be tested without branches (consider_pair), up to
+  // EngineOptions::branch_free_scan_up_to disks.
   static constexpr bool kSelectPairs = !kGravity && std::is_same_v<Contact, StableContact>;
 
   // Disk i (at pi with velocity vi, now) against disk k's image shifted by (sx, sy): keeps the earlier.
@@ -444,7 +446,7 @@ class Engine final : public EngineApi<T> {
       const Position2<T> pk = pos_at(dk);
       if (just_collided(i, k, (pk.x + sx) - pi.x, (pk.y + sy) - pi.y)) return;
     }
-    if constexpr (kSelectPairs) {
+    if (kSelectPairs && select_pairs_) {
       // Without branches on the data (pair_contact_time_select): Candidate::before spelled out as selects
       // for a pair candidate {t, Pair, k}, so the winner is the same as the branching version's. (Letting
       // disk i itself through, masked here, instead of scan_3x3's test was 7 % slower at 10^4 disks.)
@@ -1085,6 +1087,7 @@ class Engine final : public EngineApi<T> {
   T big_radius_ = kNever<T>;
   static constexpr const char* kWallName[4] = {"left", "right", "bottom", "top"};
   T b_noise2_ = 0;  // round-off floor of b, geometry.hpp
+  bool select_pairs_ = false;  // consider_pair without branches (kSelectPairs, EngineOptions)
   T now_ = 0;
   T stop_time_ = kNever<T>;
   double ke0_ = 0, ke_ = 0;
