@@ -162,9 +162,7 @@ TEST_CASE("time reversal: reversing every velocity retraces the path back to the
 
 TEST_CASE("the branch-free neighbour scan gives the same events, bit for bit", "[run][determinism]") {
   // EngineOptions::branch_free_scan_up_to is a speed choice: both scans must pick the same winner among
-  // the same candidates. Walled and periodic, float and double, a dilute and a dense lattice. (Exact ties
-  // between two partners are too rare here to test the tie rule: swapping it was not caught. It is
-  // Candidate::before written as selects, term by term.)
+  // the same candidates. Walled and periodic, float and double, a dilute and a dense lattice.
   for (BoundaryKind bc : {BoundaryKind::Walls, BoundaryKind::Periodic})
     for (const double r : {0.015, 0.0249}) {
       const InitialState s = lattice_gas(20, r, 1.0, 9);
@@ -191,6 +189,29 @@ TEST_CASE("the branch-free neighbour scan gives the same events, bit for bit", "
       CHECK(digest(ra.events) == digest(rb.events));
       CHECK(digest(rfa.events) == digest(rfb.events));
     }
+}
+
+TEST_CASE("both neighbour scans break an exact tie between two partners by the lower id", "[run][determinism]") {
+  // A disk moving up between two disks at rest, placed symmetrically on dyadic coordinates: both contacts
+  // come at exactly the same time (the same b and c bit for bit), and the disks at rest predict nothing,
+  // so the moving disk's own choice is the first collision. Candidate's order says the lower id wins.
+  for (const bool lower_on_the_left : {true, false}) {
+    InitialState s = box();
+    const double r = 1.0 / 32, off = 3.0 / 64, up = 1.0 / 16;  // off < 2 r: both are hit
+    s.add(0.5, 0.28125, 0, 1, r, 1.0, 0);
+    s.add(0.5 + (lower_on_the_left ? -off : off), 0.28125 + up, 0, 0, r, 1.0, 0);
+    s.add(0.5 + (lower_on_the_left ? off : -off), 0.28125 + up, 0, 0, r, 1.0, 0);
+    for (const std::size_t up_to : {std::size_t(0), s.size()}) {
+      EngineOptions o = walls_until(0.1);
+      o.branch_free_scan_up_to = up_to;
+      const RecordedRun run = run_recorded(s, o);
+      INFO((up_to ? "branch-free" : "branching") << " scan, lower id on the " << (lower_on_the_left ? "left" : "right"));
+      REQUIRE(!run.pairs().empty());
+      const EventOutcome<double> first = run.pairs().front();  // a copy: pairs() returns a new vector
+      CHECK(std::min(first.i, first.j) == 0);
+      CHECK(std::max(first.i, first.j) == 1);
+    }
+  }
 }
 
 TEST_CASE("the all-pairs baseline and the cell engine agree", "[run][baseline]") {
