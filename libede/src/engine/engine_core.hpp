@@ -129,6 +129,7 @@ class Engine final : public EngineApi<T> {
     }
     b_noise2_ = b_noise2_for(std::max(lx_, ly_));
     select_pairs_ = init.size() <= options.branch_free_scan_up_to;
+    prefetch_ahead_ = init.size() >= options.prefetch_upcoming_from;
     grid_.reset(shape.nx, shape.ny, lx_, ly_, p_.disk);
     find_big_disks(init, shape.split);
     if constexpr (kSegments) setup_segments(options.physics, init, shape);
@@ -193,6 +194,7 @@ class Engine final : public EngineApi<T> {
     const T t_limit = std::min(stop_time_, until);
     for (std::uint64_t done = 0; done < max_events;) {
       const QueueKey<T> next = queue_.top();
+      if (prefetch_ahead_) prefetch_upcoming();
       const T t_sample = next_sample_time();
       const T t_action = next_action_time();
       const T t_stop = stop_time_;
@@ -222,6 +224,27 @@ class Engine final : public EngineApi<T> {
     }
     return RunStatus::Running;
   }
+
+  // The disks of the next few events (the queue's next buckets), fetched into the cache while this event
+  // runs: their records and predictions, and one event later their partners' records (the prediction is
+  // in the cache by then). Only the cache changes: the events are the same with or without.
+  void prefetch_upcoming() {
+    for (std::uint32_t k = 0; k < upcoming_count_; ++k) {
+      const Prediction& pr = pred_[std::size_t(upcoming_[k])];
+      const std::int32_t partner = pr.partner();  // -1 for none (a disk at rest predicts nothing)
+      if (partner >= 0 && pr.coll_kind() == EventKind::Pair) __builtin_prefetch(&p_.disk[std::size_t(partner)]);
+    }
+    upcoming_count_ = 0;
+    queue_.visit_ahead(kPrefetchBuckets, [&](std::int32_t d) {
+      __builtin_prefetch(&p_.disk[std::size_t(d)]);
+      __builtin_prefetch(&pred_[std::size_t(d)]);
+      if (upcoming_count_ < kUpcoming) upcoming_[upcoming_count_++] = d;
+    });
+  }
+  // Three buckets (about three events) ahead: 2, 3, 5 and 8 measured alike at 10^6 disks.
+  static constexpr std::uint32_t kPrefetchBuckets = 3, kUpcoming = 16;
+  std::int32_t upcoming_[kUpcoming] = {};
+  std::uint32_t upcoming_count_ = 0;
 
   // Nothing left to happen and no stop time: samples after now would observe the same state for ever
   // (disks at rest with only an event-count stop, say), so the run ends with NoMoreEvents instead of
@@ -1087,6 +1110,7 @@ class Engine final : public EngineApi<T> {
   T big_radius_ = kNever<T>;
   static constexpr const char* kWallName[4] = {"left", "right", "bottom", "top"};
   T b_noise2_ = 0;  // round-off floor of b, geometry.hpp
+  bool prefetch_ahead_ = false;  // prefetch_upcoming() (EngineOptions::prefetch_upcoming_from)
   bool select_pairs_ = false;  // consider_pair without branches (kSelectPairs, EngineOptions)
   T now_ = 0;
   T stop_time_ = kNever<T>;

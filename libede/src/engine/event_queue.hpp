@@ -77,6 +77,7 @@ class EventQueue {
     heap_.clear();
     heap_.reserve(64);
     cur_ = buckets_;  // no year yet: every finite key goes to the overflow list (base = -inf)
+    ahead_ = 0;
     base_ = -scalar_limits<T>::infinity();
     inv_width_ = 1;
     never_min_ = kNil;
@@ -96,6 +97,19 @@ class EventQueue {
     return never_top();
   }
   QueueKey<T> key_of(std::uint32_t disk) const { return key(std::int32_t(disk)); }
+
+  // Calls f(disk) once for every disk keyed in the buckets up to `ahead` past the current one that it has
+  // not visited yet: with about one key per bucket and new keys spread over the whole year, these are very
+  // likely the next events (the engine prefetches their records, run_until).
+  template <class F>
+  void visit_ahead(std::uint32_t ahead, F&& f) {
+    if (ahead_ < cur_) ahead_ = cur_;
+    const std::uint32_t last = std::min(cur_ + ahead, buckets_ - 1);
+    while (ahead_ < last) {
+      ++ahead_;
+      for (std::int32_t d = head_[ahead_]; d != kNil; d = next_[d]) f(d);
+    }
+  }
 
   void set(std::uint32_t disk, T time, EventKind kind) {
     const std::int32_t d = std::int32_t(disk);
@@ -211,6 +225,7 @@ class EventQueue {
     base_ = t_min;
     inv_width_ = double(buckets_) / std::max(span, floor_span);
     cur_ = 0;
+    ahead_ = 0;
     std::int32_t d = head_[of];
     head_[of] = kNil;
     while (d != kNil) {
@@ -291,6 +306,7 @@ class EventQueue {
 
   std::uint32_t buckets_ = 16;  // per year: max(16, N) (a power of two >= N cost up to 8 B/disk)
   std::uint32_t cur_ = 16;      // the current bucket: keys in buckets <= cur_ are in the heap
+  std::uint32_t ahead_ = 0;     // visit_ahead has visited the buckets up to here
   T base_ = T(0);               // the year's start time
   double inv_width_ = 1;        // buckets per unit time
   std::vector<T> time_;               // each disk's key: its time
