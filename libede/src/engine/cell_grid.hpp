@@ -51,6 +51,7 @@ class CellGrid {
   std::int32_t cell_at(std::int32_t cx, std::int32_t cy) const { return cy * nx_ + cx; }
   std::int32_t cell_of(std::int32_t disk) const { return disks_[disk].cell; }
   std::int32_t head(std::int32_t cell) const { return head_[cell]; }
+  const std::int32_t* head_data() const { return head_.data(); }
   std::int32_t next(std::int32_t disk) const { return disks_[disk].next_in_cell; }
 
   // The cell containing a position (clamped into the grid: round-off may put a disk a hair outside).
