@@ -80,5 +80,13 @@ struct StableContact {
     return pair_contact_time(dx, dy, dvx, dvy, s, b_noise2);
   }
 };
+// The same root computed without branches (geometry.hpp, pair_contact_time_select): the same bits, used by
+// the neighbour scan of small systems (engine_core.hpp, consider_pair). Not an engine's policy.
+struct StableContactSelect {
+  template <class T>
+  static T time(T dx, T dy, T dvx, T dvy, T s, T b_noise2) {
+    return pair_contact_time_select(dx, dy, dvx, dvy, s, b_noise2);
+  }
+};
 
 }  // namespace ede

@@ -507,9 +507,7 @@ class Engine final : public EngineApi<T> {
       // Without branches on the data (pair_contact_time_select): Candidate::before spelled out as selects
       // for a pair candidate {t, Pair, k}, so the winner is the same as the branching version's. (Letting
       // disk i itself through, masked here, instead of scan_3x3's test was 7 % slower at 10^4 disks.)
-      const Position2<T> pk = position_at(dk, now_);
-      const T t = now_ + pair_contact_time_select((pk.x + sx) - pi.x, (pk.y + sy) - pi.y, dk.vx - di.vx,
-                                                  dk.vy - di.vy, di.r + dk.r, b_noise2_);
+      const T t = predict_pair<StableContactSelect>(di, pi, dk, sx, sy, now_, b_noise2_);
       const bool tie_won = (best.kind != EventKind::Pair) | (k < best.partner);
       const bool better = (t < best.time) | ((t == best.time) & tie_won);
       best.time = select_value(better, t, best.time);
