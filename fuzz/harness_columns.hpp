@@ -30,12 +30,13 @@ inline bool fuzz_columns(const std::uint8_t* data, std::size_t size) {
   const auto physics = ede::EventPhysics<double>::box(1.0, 1.0, (data[0] & 0x80) != 0, 0.0, 0.0);
   ede::Particles<double> state;
   state.disk.assign(n, ede::Disk<double>{});
-  state.mass.assign(n, 1.0);
-  state.species.assign(n, 0);
+  std::vector<double> masses(n);
   for (std::size_t i = 0; i < n; ++i) {
     state.disk[i].x = 0.5, state.disk[i].y = 0.5, state.disk[i].vx = double(i % 3) - 1, state.disk[i].r = 0.01;
-    state.mass[i] = 1.0 + double(i);
+    masses[i] = 1.0 + double(i);
   }
+  state.set_masses(std::move(masses));
+  state.set_species(std::vector<std::int32_t>(n, 0));
   ede::MessageWords storage((size + 7) / 8 + 1, 0);  // zeroed: the tail past `size` is never a column, but keep it defined
   auto* bytes = reinterpret_cast<unsigned char*>(storage.data());
   std::memcpy(bytes, data, size);

@@ -49,7 +49,7 @@ struct Totals {
 inline Totals totals(const ede::Particles<double>& p) {
   Totals t;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    const double m = p.mass[i], vx = p.disk[i].vx, vy = p.disk[i].vy;
+    const double m = p.mass(i), vx = p.disk[i].vx, vy = p.disk[i].vy;
     t.energy += 0.5 * m * (vx * vx + vy * vy);
     t.px += m * vx;
     t.py += m * vy;

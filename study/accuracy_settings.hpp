@@ -108,7 +108,7 @@ typename Wide<T>::type kinetic_energy_wide(const Particles<T>& p) {
   W sum = 0, lost = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const W vx = W(p.disk[i].vx), vy = W(p.disk[i].vy);
-    const W term = W(p.mass[i]) * (vx * vx + vy * vy);
+    const W term = W(p.mass(i)) * (vx * vx + vy * vy);
     const W next = sum + term;
     lost += (sum > term ? sum - next + term : term - next + sum);  // sum >= 0, term >= 0: no abs needed
     sum = next;

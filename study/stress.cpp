@@ -40,7 +40,7 @@ struct Totals {
 Totals totals(const Particles<double>& p) {
   Totals t;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    const double m = p.mass[i], vx = p.disk[i].vx, vy = p.disk[i].vy;
+    const double m = p.mass(i), vx = p.disk[i].vx, vy = p.disk[i].vy;
     t.energy += 0.5 * m * (vx * vx + vy * vy);
     t.px += m * vx;
     t.py += m * vy;

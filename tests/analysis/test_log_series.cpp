@@ -83,7 +83,7 @@ void check_series_matches_replay(const std::string& path, int points) {
     const Particles<T>& p = replay->particles();
     for (std::size_t i = 0; i < p.size(); ++i) {
       const long double vx = p.disk[i].vx, vy = p.disk[i].vy;
-      per_species[std::size_t(p.species[i])] += 0.5L * (long double)p.mass[i] * (vx * vx + vy * vy);
+      per_species[std::size_t(p.species_of(i))] += 0.5L * (long double)p.mass(i) * (vx * vx + vy * vy);
     }
     for (std::size_t sp = 0; sp < per_species.size(); ++sp)
       REQUIRE(std::abs(s.species_energy[sp][k] - double(per_species[sp])) <= 1e-13 * fresh);

@@ -33,7 +33,7 @@ Quad energy(const Particles<T>& p) {
   Quad sum = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const Quad vx = p.disk[i].vx, vy = p.disk[i].vy;
-    sum += Quad(p.mass[i]) * (vx * vx + vy * vy) / 2;
+    sum += Quad(p.mass(i)) * (vx * vx + vy * vy) / 2;
   }
   return sum;
 }

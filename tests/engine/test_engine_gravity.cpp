@@ -25,7 +25,7 @@ double mechanical_energy(const EngineApi<double>& e) {
   long double sum = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const double vx = p.vx_at(i, t), vy = p.vy_at(i, t);
-    sum += 0.5L * p.mass[i] * (vx * vx + vy * vy) - (long double)p.mass[i] * p.gy * p.y_at(i, t);
+    sum += 0.5L * p.mass(i) * (vx * vx + vy * vy) - (long double)p.mass(i) * p.gy * p.y_at(i, t);
   }
   return double(sum);
 }

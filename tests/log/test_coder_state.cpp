@@ -17,8 +17,8 @@ Particles<double> three_disks(bool uniform) {
     d.x = 0.1 + 0.3 * double(i), d.y = 0.5, d.vx = i == 0 ? 1.0 : -1.0, d.vy = 0.25 * double(i), d.t = 0.01 * double(i);
     d.r = uniform ? 0.05 : 0.04 + 0.01 * double(i);
   }
-  p.mass = uniform ? std::vector<double>{1, 1, 1} : std::vector<double>{1, 2, 3};
-  p.species = uniform ? std::vector<std::int32_t>{0, 0, 0} : std::vector<std::int32_t>{0, 1, 0};
+  p.set_masses(uniform ? std::vector<double>{1, 1, 1} : std::vector<double>{1, 2, 3});
+  p.set_species(uniform ? std::vector<std::int32_t>{0, 0, 0} : std::vector<std::int32_t>{0, 1, 0});
   return p;
 }
 }  // namespace
@@ -43,8 +43,8 @@ TEST_CASE("CoderState keeps uniform per-disk values once and reads like the Part
       const Disk<double> d = record_of(s, i);
       CHECK(same_motion(d, p.disk[i]));
       CHECK(d.r == p.disk[i].r);
-      CHECK(mass_of(s, i) == p.mass[i]);
-      CHECK(species_of(s, i) == p.species[i]);
+      CHECK(mass_of(s, i) == p.mass(i));
+      CHECK(species_of(s, i) == p.species_of(i));
     }
     // The predictors give the same bits on both states.
     CHECK(predict_pair_time(ph, s, 0, 1) == predict_pair_time(ph, p, 0, 1));

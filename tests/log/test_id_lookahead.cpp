@@ -14,8 +14,8 @@ namespace {
 Particles<double> state_of(std::size_t n) {
   Particles<double> p;
   p.disk.resize(n);
-  p.mass.assign(n, 1.0);
-  p.species.assign(n, 0);
+  p.set_masses(std::vector<double>(n, 1.0));
+  p.set_species(std::vector<std::int32_t>(n, 0));
   return p;
 }
 

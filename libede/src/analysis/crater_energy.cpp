@@ -24,7 +24,7 @@ constexpr double kConfirmMargin = 1e-9;
 template <class T>
 long double disk_energy(const Particles<T>& p, std::size_t i) {
   const long double vx = p.disk[i].vx, vy = p.disk[i].vy;
-  return 0.5L * (long double)p.mass[i] * (vx * vx + vy * vy);
+  return 0.5L * (long double)p.mass(i) * (vx * vx + vy * vy);
 }
 
 template <class T>

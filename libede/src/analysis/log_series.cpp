@@ -94,9 +94,9 @@ class EnergyWalk {
       long double total = 0;
       std::vector<long double> per_species(species_sum_.size(), 0.0L);
       for (std::size_t i = 0; i < p_.size(); ++i) {
-        const long double e = energy_of(p_.mass[i], p_.vx_at(i, t), p_.vy_at(i, t));
+        const long double e = energy_of(p_.mass(i), p_.vx_at(i, t), p_.vy_at(i, t));
         total += e;
-        per_species[std::size_t(p_.species[i])] += e;
+        per_species[std::size_t(p_.species_of(i))] += e;
       }
       s.kinetic_energy.push_back(double(total));
       for (std::size_t k = 0; k < per_species.size(); ++k) s.species_energy[k].push_back(double(per_species[k]));
@@ -116,10 +116,10 @@ class EnergyWalk {
     return 0.5L * (long double)p_.inertia[i] * (x * x);
   }
   void set(std::size_t i, T vx, T vy, T w) {
-    const long double e = energy_of(p_.mass[i], vx, vy) + spin_energy(i, w);
+    const long double e = energy_of(p_.mass(i), vx, vy) + spin_energy(i, w);
     const long double delta = e - energy_[i];
     total_ += delta;
-    species_sum_[std::size_t(p_.species[i])] += delta;
+    species_sum_[std::size_t(p_.species_of(i))] += delta;
     energy_[i] = e;
   }
 
@@ -129,10 +129,10 @@ class EnergyWalk {
     total_ = 0;
     std::fill(species_sum_.begin(), species_sum_.end(), 0.0L);
     for (std::size_t i = 0; i < p_.size(); ++i) {
-      energy_[i] = energy_of(p_.mass[i], p_.disk[i].vx, p_.disk[i].vy) +
+      energy_[i] = energy_of(p_.mass(i), p_.disk[i].vx, p_.disk[i].vy) +
                    spin_energy(i, p_.omega.empty() ? T(0) : p_.omega[i]);
       total_ += energy_[i];
-      species_sum_[std::size_t(p_.species[i])] += energy_[i];
+      species_sum_[std::size_t(p_.species_of(i))] += energy_[i];
     }
   }
 
@@ -185,8 +185,9 @@ Status snapshots_in(const std::shared_ptr<const LogReader>& log, const std::vect
   const Particles<T>& p = replay.particles();
   GasSnapshot snap;
   snap.species_names = log->header().species_names;
-  snap.mass.assign(p.mass.begin(), p.mass.end());
-  snap.species = p.species;
+  const std::vector<T> masses = p.mass_column();
+  snap.mass.assign(masses.begin(), masses.end());
+  snap.species = p.species_column();
   snap.vx.resize(p.size());
   snap.vy.resize(p.size());
   for (const double t : times) {

@@ -70,7 +70,7 @@ class PressurePass {
   }
 
   void set_velocity(std::size_t i, T vx, T vy) {
-    const long double m = replay_.particles().mass[i];
+    const long double m = replay_.particles().mass(i);
     const long double ox = vx_[i], oy = vy_[i], nx = vx, ny = vy;
     kin_ += m * (nx * nx + ny * ny - ox * ox - oy * oy) / 2;
     px_ += m * (nx - ox);
@@ -87,7 +87,7 @@ class PressurePass {
       dx -= lx_ * std::nearbyint(dx / lx_);
       dy -= ly_ * std::nearbyint(dy / ly_);
     }
-    const long double m = p.mass[i];
+    const long double m = p.mass(i);
     const long double dpx = m * ((long double)e.vix - vx_[i]), dpy = m * ((long double)e.viy - vy_[i]);
     out_.virial[bin_] += dx * dpx + dy * dpy;
     ++out_.pairs[bin_];
@@ -98,7 +98,7 @@ class PressurePass {
   void wall(const ReplayedEvent<T>& e) {
     const std::size_t i = std::size_t(e.i);
     const bool vertical = e.j == kWallLeft || e.j == kWallRight;
-    const long double m = replay_.particles().mass[i];
+    const long double m = replay_.particles().mass(i);
     const long double dv = vertical ? (long double)e.vix - vx_[i] : (long double)e.viy - vy_[i];
     if (e.j >= 0 && e.j < 4) out_.wall_impulse[bin_][std::size_t(e.j)] += m * std::fabs(dv);
     ++out_.walls[bin_];
@@ -112,7 +112,7 @@ class PressurePass {
     kin_ = px_ = py_ = mass_ = 0;
     for (std::size_t i = 0; i < p.size(); ++i) {
       vx_[i] = p.disk[i].vx, vy_[i] = p.disk[i].vy;
-      const long double m = p.mass[i], vx = vx_[i], vy = vy_[i];
+      const long double m = p.mass(i), vx = vx_[i], vy = vy_[i];
       kin_ += m * (vx * vx + vy * vy) / 2;
       px_ += m * vx, py_ += m * vy, mass_ += m;
     }

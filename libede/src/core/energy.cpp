@@ -32,7 +32,7 @@ double kinetic_energy(const Particles<T>& p) {
   long double sum = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const long double vx = p.disk[i].vx, vy = p.disk[i].vy;
-    sum += 0.5L * (long double)p.mass[i] * (vx * vx + vy * vy);
+    sum += 0.5L * (long double)p.mass(i) * (vx * vx + vy * vy);
   }
   return double(sum + rotational_sum(p));  // + 0 exactly for smooth disks
 }
@@ -41,8 +41,8 @@ template <class T>
 void momentum(const Particles<T>& p, double& px, double& py) {
   long double sx = 0, sy = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    sx += (long double)p.mass[i] * p.disk[i].vx;
-    sy += (long double)p.mass[i] * p.disk[i].vy;
+    sx += (long double)p.mass(i) * p.disk[i].vx;
+    sy += (long double)p.mass(i) * p.disk[i].vy;
   }
   px = double(sx);
   py = double(sy);
@@ -53,7 +53,7 @@ double kinetic_energy(const Particles<T>& p, T t) {
   long double sum = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const long double vx = p.vx_at(i, t), vy = p.vy_at(i, t);
-    sum += 0.5L * (long double)p.mass[i] * (vx * vx + vy * vy);
+    sum += 0.5L * (long double)p.mass(i) * (vx * vx + vy * vy);
   }
   return double(sum + rotational_sum(p));
 }
@@ -62,8 +62,8 @@ template <class T>
 void momentum(const Particles<T>& p, T t, double& px, double& py) {
   long double sx = 0, sy = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    sx += (long double)p.mass[i] * p.vx_at(i, t);
-    sy += (long double)p.mass[i] * p.vy_at(i, t);
+    sx += (long double)p.mass(i) * p.vx_at(i, t);
+    sy += (long double)p.mass(i) * p.vy_at(i, t);
   }
   px = double(sx);
   py = double(sy);

@@ -9,6 +9,7 @@
 // A disk's position at time t is drift(x, vx, t_last, t): state is lazy, untouched disks cost nothing.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -34,8 +35,11 @@ struct alignas(64) Disk {
 template <class T>
 struct Particles {
   std::vector<Disk<T>> disk;
-  std::vector<T> mass;
-  std::vector<std::int32_t> species;
+  // Masses and species: one value for all disks when they all have the same (set_masses, set_species), else
+  // one per disk, so that a one-mass, one-species gas pays nothing per disk for them (12 B/disk in double:
+  // issue 15's 120 B/disk). Read them through mass(i) and species_of(i).
+  std::vector<T> masses;
+  std::vector<std::int32_t> species_ids;
   std::vector<T> last_collision;  // TC model only (else empty): time of each disk's last collision
   // Rough engines only (else empty): angular velocity (counter-clockwise positive) and moment of inertia.
   // Cold like mass: read only at collisions, so they stay out of the 64-byte hot record.
@@ -43,12 +47,32 @@ struct Particles {
   T gx{}, gy{};                   // the constant gravity the disks fall under between events (usually 0)
 
   std::size_t size() const { return disk.size(); }
+  T mass(std::size_t i) const { return masses.size() == 1 ? masses[0] : masses[i]; }
+  std::int32_t species_of(std::size_t i) const { return species_ids.size() == 1 ? species_ids[0] : species_ids[i]; }
+  // Each keeps a single value when every disk has the same (and the whole vector otherwise).
+  void set_masses(std::vector<T> m) { masses = compact(std::move(m)); }
+  void set_species(std::vector<std::int32_t> s) { species_ids = compact(std::move(s)); }
+  // One value per disk, whether stored once or per disk (for copies out: states, v1 logs).
+  std::vector<T> mass_column() const { return column(masses); }
+  std::vector<std::int32_t> species_column() const { return column(species_ids); }
   // Position and velocity of disk i at time t (>= its record's time), by the shared functions of drift.hpp.
   // Without gravity the velocity is the record's; with gravity, read it here, not from disk[i].vx.
   T x_at(std::size_t i, T t) const { return position_along(disk[i].x, disk[i].vx, gx, disk[i].t, t); }
   T y_at(std::size_t i, T t) const { return position_along(disk[i].y, disk[i].vy, gy, disk[i].t, t); }
   T vx_at(std::size_t i, T t) const { return velocity_along(disk[i].vx, gx, disk[i].t, t); }
   T vy_at(std::size_t i, T t) const { return velocity_along(disk[i].vy, gy, disk[i].t, t); }
+
+ private:
+  template <class V>
+  std::vector<V> column(const std::vector<V>& v) const {
+    return v.size() == 1 && size() != 1 ? std::vector<V>(size(), v[0]) : v;
+  }
+  template <class V>
+  static std::vector<V> compact(std::vector<V> v) {
+    if (v.size() > 1 && std::all_of(v.begin() + 1, v.end(), [&](const V& x) { return x == v[0]; }))
+      return std::vector<V>{v[0]};
+    return v;
+  }
 };
 
 }  // namespace ede

@@ -78,13 +78,13 @@ void write_state_csv(std::FILE* out, const Particles<T>& p, T time, const std::v
   std::fputs(p.omega.empty() ? "id,species,x,y,vx,vy,radius,mass\n" : "id,species,x,y,vx,vy,radius,mass,omega,inertia\n", out);
   for (std::size_t i = 0; i < p.size(); ++i) {
     const Disk<T>& d = p.disk[i];
-    const std::int32_t s = p.species[i];
+    const std::int32_t s = p.species_of(i);
     std::fprintf(out, "%zu,", i);
     if (s >= 0 && std::size_t(s) < species_names.size())
       std::fputs(species_names[std::size_t(s)].c_str(), out);
     else
       std::fprintf(out, "%d", s);
-    for (T v : {p.x_at(i, time), p.y_at(i, time), p.vx_at(i, time), p.vy_at(i, time), d.r, p.mass[i]}) {
+    for (T v : {p.x_at(i, time), p.y_at(i, time), p.vx_at(i, time), p.vy_at(i, time), d.r, p.mass(i)}) {
       std::fputc(',', out);
       put(out, v);
     }

@@ -37,7 +37,7 @@ State state_of(const Particles<T>& p, T time, std::uint64_t events, double lx, d
     vx[i] = C(p.vx_at(i, time));
     vy[i] = C(p.vy_at(i, time));
     r[i] = C(p.disk[i].r);
-    m[i] = C(p.mass[i]);
+    m[i] = C(p.mass(i));
   }
   State s;
   s.time = Time(time);
@@ -46,7 +46,7 @@ State state_of(const Particles<T>& p, T time, std::uint64_t events, double lx, d
   s.lx = lx, s.ly = ly, s.boundary = boundary;
   s.x = Column(std::move(x)), s.y = Column(std::move(y)), s.vx = Column(std::move(vx));
   s.vy = Column(std::move(vy)), s.radius = Column(std::move(r)), s.mass = Column(std::move(m));
-  s.species = p.species;
+  s.species = p.species_column();
   s.species_names = species_names;
   if (!p.omega.empty()) {
     std::vector<C> w(n), inertia(n);

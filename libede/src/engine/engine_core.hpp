@@ -178,8 +178,8 @@ class Engine final : public EngineApi<T> {
   }
 
   std::size_t memory_bytes() const override {
-    return p_.disk.capacity() * sizeof(Disk<T>) + p_.mass.capacity() * sizeof(T) +
-           p_.species.capacity() * sizeof(std::int32_t) + p_.last_collision.capacity() * sizeof(T) +
+    return p_.disk.capacity() * sizeof(Disk<T>) + p_.masses.capacity() * sizeof(T) +
+           p_.species_ids.capacity() * sizeof(std::int32_t) + p_.last_collision.capacity() * sizeof(T) +
            pred_.capacity() * sizeof(Prediction) + grid_.memory_bytes() + queue_.memory_bytes() +
            big_.capacity() * sizeof(BigDisk) + seg_.capacity() * sizeof(Segment<T>) + seg_cells_.memory_bytes() +
            (p_.omega.capacity() + p_.inertia.capacity() + beta_table_.capacity()) * sizeof(T);
@@ -348,14 +348,15 @@ class Engine final : public EngineApi<T> {
   void load(const InitialState& init) {
     const std::size_t n = init.size();
     p_.disk.resize(n);
-    p_.mass.resize(n);
-    p_.species = init.species;
+    std::vector<T> masses(n);
     if (tc_model()) p_.last_collision.assign(n, -scalar_limits<T>::infinity());
     for (std::size_t i = 0; i < n; ++i) {
       p_.disk[i] = Disk<T>{T(init.x[i]), T(init.y[i]), T(init.vx[i]), T(init.vy[i]), T(0), T(init.radius[i]),
                            -1, 0, -1, -1};
-      p_.mass[i] = T(init.mass[i]);
+      masses[i] = T(init.mass[i]);
     }
+    p_.set_masses(std::move(masses));
+    p_.set_species(init.species);
     if constexpr (kRough) load_spins(init);
     ke0_ = kinetic_energy(p_);
     ke_ = ke0_;
@@ -761,9 +762,9 @@ class Engine final : public EngineApi<T> {
     const bool by_tc = tc_elastic(i, j);
     if constexpr (kDissipative) {
       const double ke_before = pair_energy(i, j);
-      collide_pair(dx, dy, p_.mass[i], p_.mass[j], by_tc ? T(2) : pair_one_plus_xi(i, j), a.vx, a.vy, b.vx, b.vy);
+      collide_pair(dx, dy, p_.mass(i), p_.mass(j), by_tc ? T(2) : pair_one_plus_xi(i, j), a.vx, a.vy, b.vx, b.vy);
       if constexpr (kRough)
-        collide_pair_tangential(dx, dy, vjx0 - vix0, vjy0 - viy0, p_.mass[i], p_.mass[j], a.r, b.r, p_.inertia[i],
+        collide_pair_tangential(dx, dy, vjx0 - vix0, vjy0 - viy0, p_.mass(i), p_.mass(j), a.r, b.r, p_.inertia[i],
                                 p_.inertia[j], by_tc ? T(0) : pair_one_plus_beta(i, j), a.vx, a.vy, b.vx, b.vy,
                                 p_.omega[i], p_.omega[j]);
       ke_ += pair_energy(i, j) - ke_before;
@@ -771,7 +772,7 @@ class Engine final : public EngineApi<T> {
       note_if_too_slow(j);
       if (tc_model()) p_.last_collision[i] = p_.last_collision[j] = now_;
     } else {
-      collide_pair(dx, dy, p_.mass[i], p_.mass[j], T(2), a.vx, a.vy, b.vx, b.vy);
+      collide_pair(dx, dy, p_.mass(i), p_.mass(j), T(2), a.vx, a.vy, b.vx, b.vy);
     }
     ++a.counter;
     ++b.counter;
@@ -802,7 +803,7 @@ class Engine final : public EngineApi<T> {
         collide_wall(vertical, xi_wall_[wall], d.vx, d.vy);
       if constexpr (kRough)
         if (!by_tc)
-          collide_wall_tangential(kWallNormal[wall][0], kWallNormal[wall][1], vx0, vy0, p_.mass[i], d.r,
+          collide_wall_tangential(kWallNormal[wall][0], kWallNormal[wall][1], vx0, vy0, p_.mass(i), d.r,
                                   p_.inertia[i], wall_one_plus_beta_, d.vx, d.vy, p_.omega[i]);
       ke_ += disk_energy(i) - ke_before;
       note_if_too_slow(i);
@@ -1071,16 +1072,16 @@ class Engine final : public EngineApi<T> {
 
   T pair_one_plus_xi(std::int32_t i, std::int32_t j) const {
     if (uniform_pairs_) return one_plus_xi_;
-    return pair_table_[std::size_t(p_.species[i]) * species_count_ + std::size_t(p_.species[j])];
+    return pair_table_[std::size_t(p_.species_of(i)) * species_count_ + std::size_t(p_.species_of(j))];
   }
 
   double disk_energy(std::int32_t i) const {
     const double vx = double(p_.disk[i].vx), vy = double(p_.disk[i].vy);
     if constexpr (kRough) {
       const double w = double(p_.omega[i]);
-      return 0.5 * double(p_.mass[i]) * (vx * vx + vy * vy) + 0.5 * double(p_.inertia[i]) * (w * w);
+      return 0.5 * double(p_.mass(i)) * (vx * vx + vy * vy) + 0.5 * double(p_.inertia[i]) * (w * w);
     }
-    return 0.5 * double(p_.mass[i]) * (vx * vx + vy * vy);
+    return 0.5 * double(p_.mass(i)) * (vx * vx + vy * vy);
   }
 
   // Rough disks: omega and I from the initial state, or omega = 0 and I = m r^2 / 2 (a uniform disk) where
@@ -1090,7 +1091,7 @@ class Engine final : public EngineApi<T> {
     p_.omega.assign(n, T(0));
     p_.inertia.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-      p_.inertia[i] = T(0.5) * p_.mass[i] * p_.disk[i].r * p_.disk[i].r;
+      p_.inertia[i] = T(0.5) * p_.mass(i) * p_.disk[i].r * p_.disk[i].r;
       if (init.omega.size() == n) p_.omega[i] = T(init.omega[i]);
       if (init.inertia.size() == n) p_.inertia[i] = T(init.inertia[i]);
     }
@@ -1112,7 +1113,7 @@ class Engine final : public EngineApi<T> {
 
   T pair_one_plus_beta(std::int32_t i, std::int32_t j) const {
     if (beta_table_.size() == 1) return beta_table_[0];
-    return beta_table_[std::size_t(p_.species[i]) * species_count_ + std::size_t(p_.species[j])];
+    return beta_table_[std::size_t(p_.species_of(i)) * species_count_ + std::size_t(p_.species_of(j))];
   }
   double pair_energy(std::int32_t i, std::int32_t j) const { return disk_energy(i) + disk_energy(j); }
 

@@ -195,7 +195,7 @@ bool ChunkDecoder<T>::read_fields(const Particles<T>& p, DecodedEvent<T>& e) {
       // Velocities just before the event: the records' own, moved on by gravity if there is any.
       const T aix = p.vx_at(std::size_t(e.i), e.time), aiy = p.vy_at(std::size_t(e.i), e.time);
       const T ajx = p.vx_at(std::size_t(e.j), e.time), ajy = p.vy_at(std::size_t(e.j), e.time);
-      const T mi = p.mass[std::size_t(e.i)], mj = p.mass[std::size_t(e.j)];
+      const T mi = p.mass(std::size_t(e.i)), mj = p.mass(std::size_t(e.j));
       if (!read_scalar(e.vix) || !read_scalar(e.viy)) return false;
       return read_residual(momentum_prediction(mi, mj, aix, ajx, e.vix), e.vjx) &&
              read_residual(momentum_prediction(mi, mj, aiy, ajy, e.viy), e.vjy);

@@ -44,9 +44,9 @@ struct CoderState {
     radius.clear();
     for (const Disk<T>& d : p.disk) radius.push_back(d.r);
     once_if_uniform(radius);
-    mass = p.mass;
+    mass = p.masses;  // already one value when uniform (Particles::set_masses)
     once_if_uniform(mass);
-    species = p.species;
+    species = p.species_ids;
     once_if_uniform(species);
     omega = p.omega;
     inertia = p.inertia;

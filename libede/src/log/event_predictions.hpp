@@ -82,11 +82,11 @@ template <class T>
 }
 template <class T>
 [[gnu::always_inline]] inline T mass_of(const Particles<T>& p, std::size_t i) {
-  return p.mass[i];
+  return p.mass(i);
 }
 template <class T>
 [[gnu::always_inline]] inline std::int32_t species_of(const Particles<T>& p, std::size_t i) {
-  return p.species[i];
+  return p.species_of(i);
 }
 
 // Post-collision velocities of pair (i, j) at time t, as Engine::resolve_pair computes them: both records

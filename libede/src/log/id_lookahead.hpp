@@ -67,8 +67,8 @@ class IdLookahead {
   static void prefetch(const Particles<T>& p, std::size_t i) {
     if (i >= p.disk.size()) return;
     __builtin_prefetch(&p.disk[i]);
-    if (i < p.mass.size()) __builtin_prefetch(&p.mass[i]);
-    if (i < p.species.size()) __builtin_prefetch(&p.species[i]);
+    if (i < p.masses.size()) __builtin_prefetch(&p.masses[i]);
+    if (i < p.species_ids.size()) __builtin_prefetch(&p.species_ids[i]);
   }
 
   ByteReader kinds_{nullptr, 0}, disks_{nullptr, 0}, partners_{nullptr, 0};

@@ -294,7 +294,7 @@ struct LogWriter<T>::Impl {
 
   void setup_coder(const Particles<T>& p) {
     coder_ready = true;
-    if (settings.format_version < 2) coder.v1_mass = p.mass;
+    if (settings.format_version < 2) coder.v1_mass = p.mass_column();
     EventPhysics<T>& physics = coder.physics;
     physics = EventPhysics<T>::box(run.lx, run.ly, run.boundary == BoundaryKind::Periodic, T(run.gx), T(run.gy));
     physics.species = std::max<std::size_t>(run.species_names.size(), 1);
@@ -383,9 +383,9 @@ struct LogWriter<T>::Impl {
     h.setKeyframeInterval(settings.keyframe_interval);
     h.setRebuildInterval(run.rebuild_interval);
     set_scalar_column<T>(h.initRadius(std::uint32_t(n * kScalarWidth<T>)), n, [&](std::size_t i) { return p.disk[i].r; });
-    set_scalar_column<T>(h.initMass(std::uint32_t(n * kScalarWidth<T>)), n, [&](std::size_t i) { return p.mass[i]; });
+    set_scalar_column<T>(h.initMass(std::uint32_t(n * kScalarWidth<T>)), n, [&](std::size_t i) { return p.mass(i); });
     auto species = h.initSpecies(std::uint32_t(p.size()));
-    for (std::size_t i = 0; i < p.size(); ++i) species.set(std::uint32_t(i), std::uint32_t(p.species[i]));
+    for (std::size_t i = 0; i < p.size(); ++i) species.set(std::uint32_t(i), std::uint32_t(p.species_of(i)));
     h.setInitialEnergy(kinetic_energy(p));
     h.setTcModel(run.tc_model);
     h.setColumnEncoding(settings.format_version);

@@ -179,8 +179,8 @@ std::string state_difference(const Particles<T>& a, const Particles<T>& b) {
   for (std::size_t i = 0; i < a.size(); ++i) {
     const Disk<T>&p = a.disk[i], &q = b.disk[i];
     if (!same_bits(p.x, q.x) || !same_bits(p.y, q.y) || !same_bits(p.vx, q.vx) || !same_bits(p.vy, q.vy) ||
-        !same_bits(p.t, q.t) || !same_bits(p.r, q.r) || !same_bits(a.mass[i], b.mass[i]) ||
-        a.species[i] != b.species[i])
+        !same_bits(p.t, q.t) || !same_bits(p.r, q.r) || !same_bits(a.mass(i), b.mass(i)) ||
+        a.species_of(i) != b.species_of(i))
       return "disk " + std::to_string(i);
   }
   return "";

@@ -139,13 +139,14 @@ Result<std::unique_ptr<Replay<T>>> Replay<T>::create(std::shared_ptr<const LogRe
   if (!read_column(h.radius.data(), h.radius.size(), n, radius) || !read_column(h.mass.data(), h.mass.size(), n, mass))
     return Error{log->path() + ": the header's radii or masses are malformed"};
   r->state_.disk.assign(n, Disk<T>{});
-  r->state_.mass = mass;
-  r->state_.species.resize(n);
+  std::vector<std::int32_t> species(n);
   for (std::size_t i = 0; i < n; ++i) {
     r->state_.disk[i].r = radius[i];
-    r->state_.species[i] = std::int32_t(h.species[i]);
+    species[i] = std::int32_t(h.species[i]);
     if (!(radius[i] > 0) || !(mass[i] > 0)) return Error{log->path() + ": a radius or mass in the header is not positive"};
   }
+  r->state_.set_masses(std::move(mass));
+  r->state_.set_species(std::move(species));
   r->lx_ = T(h.lx);
   r->ly_ = T(h.ly);
   r->state_.gx = T(h.gx);

@@ -60,7 +60,7 @@ class Comparer final : public Sink<T> {
     for (std::size_t i = 0; i < p.size() && difference_.empty(); ++i) {
       const Disk<T>&a = p.disk[i], &b = q.disk[i];
       if (!same_bits(a.x, b.x) || !same_bits(a.y, b.y) || !same_bits(a.vx, b.vx) || !same_bits(a.vy, b.vy) ||
-          !same_bits(a.r, b.r) || !same_bits(p.mass[i], q.mass[i]) || p.species[i] != q.species[i])
+          !same_bits(a.r, b.r) || !same_bits(p.mass(i), q.mass(i)) || p.species_of(i) != q.species_of(i))
         difference_ = "the initial state differs at disk " + std::to_string(i) + ":\n  re-run: " + disk_text(p, i) +
                       "\n  log:    " + disk_text(q, i);
     }
@@ -105,7 +105,7 @@ class Comparer final : public Sink<T> {
   static std::string disk_text(const Particles<T>& p, std::size_t i) {
     const Disk<T>& d = p.disk[i];
     return "x = (" + exact(d.x) + ", " + exact(d.y) + "), v = (" + exact(d.vx) + ", " + exact(d.vy) +
-           "), r = " + exact(d.r) + ", m = " + exact(p.mass[i]) + ", species " + std::to_string(p.species[i]);
+           "), r = " + exact(d.r) + ", m = " + exact(p.mass(i)) + ", species " + std::to_string(p.species_of(i));
   }
 
   std::string keyframe_name(std::size_t k) const {

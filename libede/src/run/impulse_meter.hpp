@@ -32,12 +32,12 @@ class ImpulseMeter final : public Sink<T> {
         dx -= lx_ * std::nearbyint(dx / lx_);
         dy -= ly_ * std::nearbyint(dy / ly_);
       }
-      const long double m = p.mass[i];
+      const long double m = p.mass(i);
       virial_ += dx * m * ((long double)e.vix - e.vix0) + dy * m * ((long double)e.viy - e.viy0);
       ++pairs_;
     } else if (e.kind == EventKind::Wall && e.j >= 0 && e.j < 4) {
       const bool vertical = e.j == kWallLeft || e.j == kWallRight;
-      const long double m = p.mass[std::size_t(e.i)];
+      const long double m = p.mass(std::size_t(e.i));
       const long double dv = vertical ? (long double)e.vix - e.vix0 : (long double)e.viy - e.viy0;
       wall_[e.j] += m * std::fabs(dv);
       ++walls_;
