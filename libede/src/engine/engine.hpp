@@ -50,7 +50,8 @@ struct EngineOptions {
   // A speed choice only, the same events either way: up to this many disks the neighbour scan tests pairs
   // without branches (engine_core.hpp, consider_pair). Faster while the disks' records stay in the L2/L3
   // caches (measured +7 to +18 % at 10^4-4*10^4 disks), slower once every scan waits on memory (10^5,
-  // 10^6: -5 to -15 %), where the branches let the core run ahead to the next neighbours' loads.
+  // 10^6: -5 to -15 %), where the branches let the core run ahead to the next neighbours' loads. The
+  // all-pairs baseline (Algorithm::AllPairs) always branches: most of its pairs are far and receding.
   std::size_t branch_free_scan_up_to = 65536;
   // Also a speed choice only: from this many disks on, the engine prefetches the records of the next few
   // events' disks (the queue's next buckets), of their partners and of their neighbours while it processes
