@@ -32,6 +32,14 @@ struct alignas(64) Disk {
   std::int32_t cell;  // the grid cell the disk is tracked in
 };
 
+// A value repeated for every entry kept once (masses, species, radii of a one-kind gas). The vector is
+// rebuilt, not shrunk in place, so its memory goes. NaN is never uniform: kept per entry.
+template <class V>
+void once_if_uniform(std::vector<V>& v) {
+  if (v.size() > 1 && std::all_of(v.begin() + 1, v.end(), [&](const V& x) { return x == v.front(); }))
+    std::vector<V>{v.front()}.swap(v);
+}
+
 template <class T>
 struct Particles {
   std::vector<Disk<T>> disk;
@@ -50,8 +58,14 @@ struct Particles {
   T mass(std::size_t i) const { return masses.size() == 1 ? masses[0] : masses[i]; }
   std::int32_t species_of(std::size_t i) const { return species_ids.size() == 1 ? species_ids[0] : species_ids[i]; }
   // Each keeps a single value when every disk has the same (and the whole vector otherwise).
-  void set_masses(std::vector<T> m) { masses = compact(std::move(m)); }
-  void set_species(std::vector<std::int32_t> s) { species_ids = compact(std::move(s)); }
+  void set_masses(std::vector<T> m) {
+    once_if_uniform(m);
+    masses = std::move(m);
+  }
+  void set_species(std::vector<std::int32_t> s) {
+    once_if_uniform(s);
+    species_ids = std::move(s);
+  }
   // One value per disk, whether stored once or per disk (for copies out: states, v1 logs).
   std::vector<T> mass_column() const { return column(masses); }
   std::vector<std::int32_t> species_column() const { return column(species_ids); }
@@ -66,12 +80,6 @@ struct Particles {
   template <class V>
   std::vector<V> column(const std::vector<V>& v) const {
     return v.size() == 1 && size() != 1 ? std::vector<V>(size(), v[0]) : v;
-  }
-  template <class V>
-  static std::vector<V> compact(std::vector<V> v) {
-    if (v.size() > 1 && std::all_of(v.begin() + 1, v.end(), [&](const V& x) { return x == v[0]; }))
-      return std::vector<V>{v[0]};
-    return v;
   }
 };
 

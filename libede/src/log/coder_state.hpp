@@ -44,10 +44,8 @@ struct CoderState {
     radius.clear();
     for (const Disk<T>& d : p.disk) radius.push_back(d.r);
     once_if_uniform(radius);
-    mass = p.masses;  // already one value when uniform (Particles::set_masses)
-    once_if_uniform(mass);
+    mass = p.masses;  // one value when uniform, as set_masses and set_species keep them
     species = p.species_ids;
-    once_if_uniform(species);
     omega = p.omega;
     inertia = p.inertia;
     gx = p.gx, gy = p.gy;
@@ -66,16 +64,6 @@ struct CoderState {
   // As Particles<T>::vx_at, vy_at.
   T vx_at(std::size_t i, T t) const { return velocity_along(motion[i].vx, gx, motion[i].t, t); }
   T vy_at(std::size_t i, T t) const { return velocity_along(motion[i].vy, gy, motion[i].t, t); }
-
- private:
-  // A value repeated for every disk kept once (radius, mass, species of a one-species scene). The vector
-  // is rebuilt, not shrunk in place, so its memory goes.
-  template <class V>
-  static void once_if_uniform(std::vector<V>& v) {
-    for (const V& x : v)
-      if (!(x == v.front())) return;  // NaN never is uniform: kept per disk
-    if (v.size() > 1) std::vector<V>{v.front()}.swap(v);
-  }
 };
 
 // The accessors the predictors and apply_event use (event_predictions.hpp, chunk_codec.hpp).
