@@ -10,7 +10,7 @@
 #include <limits>
 #include <string>
 
-#include "core/number_text.hpp"
+#include "ede/number_text.hpp"
 #include "core/rng.hpp"
 
 using namespace ede;

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "analysis/crater.hpp"
-#include "core/number_text.hpp"
+#include "ede/number_text.hpp"
 
 namespace ede {
 

@@ -13,7 +13,7 @@
 #include "analysis/crater.hpp"
 #include "engine/engine.hpp"
 #include "replay/replay.hpp"
-#include "core/number_text.hpp"
+#include "ede/number_text.hpp"
 #include "core/scalar_dispatch.hpp"
 
 namespace ede {

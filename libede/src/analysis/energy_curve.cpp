@@ -10,7 +10,7 @@
 #include <cmath>
 #include <string>
 
-#include "core/number_text.hpp"
+#include "ede/number_text.hpp"
 #include "ede/analysis.hpp"
 #include "ede/kinetic_theory.hpp"
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <type_traits>
 
-#include "core/number_text.hpp"
+#include "ede/number_text.hpp"
 #include "log/log_stats.hpp"
 #include "replay/replay.hpp"
 

@@ -10,7 +10,7 @@
 #include <limits>
 
 #include "log/log_stats.hpp"
-#include "core/number_text.hpp"
+#include "ede/number_text.hpp"
 #include "analysis/pressure_pass.hpp"
 
 namespace ede {

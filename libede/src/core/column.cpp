@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "core/number_text.hpp"
+#include "ede/number_text.hpp"
 #include "ede/state.hpp"
 
 namespace ede {

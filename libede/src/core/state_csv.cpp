@@ -1,7 +1,7 @@
 // Exact CSV snapshots of a state; see state_csv.hpp.
 #include "core/state_csv.hpp"
 
-#include "core/number_text.hpp"
+#include "ede/number_text.hpp"
 #include "ede/state.hpp"
 
 #include <cerrno>

@@ -62,7 +62,7 @@ Status convert_as(const std::shared_ptr<const LogReader>& log, const std::string
   const auto rebuilds_at = [&](std::uint64_t events) -> Status {
     for (; next_keyframe < keyframes.size() && keyframes[next_keyframe].first_event <= events; ++next_keyframe) {
       if (!keyframes[next_keyframe].resumable || keyframes[next_keyframe].first_event != events) continue;
-      auto point = made_points.value()->resume_point(next_keyframe);
+      auto point = made_points.value()->rebuild_point(next_keyframe);
       if (!point) return point.error();
       Particles<T> p = replay.particles();
       for (std::size_t i = 0; i < p.size(); ++i) {
@@ -71,7 +71,7 @@ Status convert_as(const std::shared_ptr<const LogReader>& log, const std::string
         d.x = from.x, d.y = from.y, d.vx = from.vx, d.vy = from.vy, d.t = from.t, d.last_partner = from.last_partner;
       }
       p.last_collision = point.value().last_collision;
-      const ResumePoint<T>& r = point.value();
+      const StoredRebuildPoint<T>& r = point.value();
       writer.on_rebuild(RebuildPoint<T>{r.time, p, r.counts, r.next_sample_index, r.next_action_index,
                                         r.same_time_events, r.initial_energy});
     }

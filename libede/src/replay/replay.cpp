@@ -11,7 +11,7 @@
 #include <cmath>
 #include <optional>
 
-#include "core/number_text.hpp"
+#include "ede/number_text.hpp"
 #include "log/run_id.hpp"
 #include "log/chunk_codec.hpp"
 #include "ede_log.capnp.h"
@@ -443,12 +443,12 @@ Result<ReplayedEvent<T>> Replay<T>::next_event() {
 }
 
 template <class T>
-Result<ResumePoint<T>> Replay<T>::resume_point(std::size_t keyframe) const {
+Result<StoredRebuildPoint<T>> Replay<T>::rebuild_point(std::size_t keyframe) const {
   auto data = read_keyframe<T>(*log_, log_->keyframes()[keyframe]);
   if (!data) return data.error();
   const KeyframeData<T>& kf = data.value();
   if (!kf.resumable) return Error{log_->path() + ": keyframe " + std::to_string(keyframe) + " is not resumable"};
-  ResumePoint<T> r;
+  StoredRebuildPoint<T> r;
   r.time = kf.time;
   r.disks.resize(state_.size());
   for (std::size_t i = 0; i < state_.size(); ++i) {

@@ -11,11 +11,11 @@
 #include <memory>
 #include <string>
 
-#include "engine/engine.hpp"
-#include "log/chunk_codec.hpp"
-#include "log/log_reader.hpp"
 #include "core/particles.hpp"
 #include "ede/error.hpp"
+#include "ede/events.hpp"
+#include "log/chunk_codec.hpp"
+#include "log/log_reader.hpp"
 
 namespace ede {
 
@@ -46,6 +46,23 @@ struct EventExtras {
   bool positions = true;
 };
 
+// What a resumable keyframe stores beyond the state: the engine's bookkeeping at one of its rebuild points
+// (last partners, TC times, counters, sample and action indices), as the log holds it. Turning it into
+// the engine's own ResumePoint is run/'s business (run/run_resume.hpp): replay reads logs and never
+// makes an engine.
+template <class T>
+struct StoredRebuildPoint {
+  T time{};
+  std::vector<Disk<T>> disks;     // x, y, vx, vy, t and last_partner as stored; r from the header
+  std::vector<T> last_collision;  // TC model only
+  std::vector<T> omega;           // rough logs
+  EventCounts counts;
+  std::uint64_t next_sample_index = 0;
+  std::uint64_t next_action_index = 0;
+  std::uint64_t same_time_events = 0;
+  double initial_energy = 0;
+};
+
 template <class T>
 class Replay {
  public:
@@ -67,8 +84,8 @@ class Replay {
   T time() const { return time_; }                         // the time positions are reported at
   std::uint64_t events_applied() const { return applied_; }
   T final_time() const;                                     // the time the run reached (complete logs), else last event
-  // The resume point of a resumable keyframe (index into log->keyframes()).
-  Result<ResumePoint<T>> resume_point(std::size_t keyframe) const;
+  // What a resumable keyframe (index into log->keyframes()) stores; an error for any other keyframe.
+  Result<StoredRebuildPoint<T>> rebuild_point(std::size_t keyframe) const;
 
  private:
   explicit Replay(std::shared_ptr<const LogReader> log);

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "core/number_text.hpp"
+#include "ede/number_text.hpp"
 #include "ede/simulation.hpp"
 
 namespace ede {

@@ -21,15 +21,6 @@ std::string exact_double(double v) {
   return text;
 }
 
-InitialState initial_of(const State& s) {
-  InitialState st;
-  st.species_names = s.species_names;
-  for (std::size_t i = 0; i < s.size(); ++i)
-    st.add(s.x[i], s.y[i], s.vx[i], s.vy[i], s.radius[i], s.mass[i], s.species[i]);
-  for (std::size_t i = 0; i < s.omega.size(); ++i) st.omega.push_back(s.omega[i]), st.inertia.push_back(s.inertia[i]);
-  return st;
-}
-
 struct Source {
   InitialState initial;
   std::string digest;
@@ -48,12 +39,12 @@ Result<Source> from_log(const StartSpec& start, const std::string& path, const s
                    "). Fix: give a time within the log, or leave start.at out to start from its end."};
     auto s = log.value().state_at(Time(*start.at));
     if (!s) return s.error();
-    src.initial = initial_of(s.value());
+    src.initial = initial_state_of(s.value());
     src.at = *start.at;
   } else {
     auto s = log.value().state_at_end();
     if (!s) return s.error();
-    src.initial = initial_of(s.value());
+    src.initial = initial_state_of(s.value());
     src.at = double(s.value().time);
   }
   auto digest = log.value().content_digest();
@@ -111,6 +102,16 @@ Status check_pair_names(const Scene& scene, const InitialState& st) {
 }
 
 }  // namespace
+
+InitialState initial_state_of(const State& s) {
+  InitialState st;
+  st.lx = s.lx, st.ly = s.ly;
+  st.species_names = s.species_names;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    st.add(s.x[i], s.y[i], s.vx[i], s.vy[i], s.radius[i], s.mass[i], s.species[i]);
+  for (std::size_t i = 0; i < s.omega.size(); ++i) st.omega.push_back(s.omega[i]), st.inertia.push_back(s.inertia[i]);
+  return st;
+}
 
 std::string resolve_start_path(const std::string& path, const std::string& scene_source_name) {
   const std::filesystem::path p(path);

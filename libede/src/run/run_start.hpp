@@ -12,6 +12,7 @@
 #include "core/initial_state.hpp"
 #include "ede/error.hpp"
 #include "ede/scene.hpp"
+#include "ede/state.hpp"
 
 namespace ede {
 
@@ -21,6 +22,9 @@ struct StartedRun {
 };
 
 Result<StartedRun> start_from_state(const Scene& scene);
+
+// A state's disks (with their spins, if any) and box as an initial state.
+InitialState initial_state_of(const State& state);
 
 // The path a [start] names, relative to the scene file's folder (as given for scene text "<...>").
 std::string resolve_start_path(const std::string& path, const std::string& scene_source_name);

@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "core/number_text.hpp"
+#include "ede/number_text.hpp"
 
 namespace ede {
 

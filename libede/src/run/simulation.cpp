@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "log/log_reader.hpp"
+#include "run/run_resume.hpp"
 #include "run/simulation_impl.hpp"
 
 namespace ede {
@@ -23,13 +24,13 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-// setup_seconds covers placement too (setup_new_run), not only the engine and the log writer.
+// setup_seconds covers placement too (plan_run), not only the engine and the log writer.
 Result<Simulation> Simulation::create(const Scene& scene, const SimulationOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  auto setup = setup_new_run(scene);
-  if (!setup) return setup.error();
+  auto plan = plan_run(scene);
+  if (!plan) return plan.error();
   const double placement = seconds_since(start);
-  auto impl = make_simulation_impl(std::move(setup).value(), options);
+  auto impl = make_simulation_impl(std::move(plan).value(), nullptr, options);
   if (!impl) return impl.error();
   impl.value()->setup_seconds += placement;
   return Simulation(std::move(impl).value());
@@ -37,12 +38,12 @@ Result<Simulation> Simulation::create(const Scene& scene, const SimulationOption
 
 Result<Simulation> Simulation::resume(const std::string& log_path, const SimulationOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  auto setup = setup_resumed_run(log_path);
-  if (!setup) return setup.error();
+  auto resumed = plan_resumed_run(log_path);
+  if (!resumed) return resumed.error();
   const double reading = seconds_since(start);
   SimulationOptions o = options;
   o.log_path.clear();  // the log being resumed is the log
-  auto impl = make_simulation_impl(std::move(setup).value(), o);
+  auto impl = make_simulation_impl(std::move(resumed.value().plan), resumed.value().log, o);
   if (!impl) return impl.error();
   impl.value()->setup_seconds += reading;
   return Simulation(std::move(impl).value());

@@ -11,13 +11,10 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <type_traits>
 
-#include "core/scalar_dispatch.hpp"
 #include "ede/simulation.hpp"
-#include "engine/engine.hpp"
-#include "log/log_writer.hpp"
-#include "run/run_setup.hpp"
+#include "log/log_reader.hpp"
+#include "run/run_plan.hpp"
 
 namespace ede {
 
@@ -48,11 +45,8 @@ struct Simulation::Impl {
   std::optional<Status> close_result;
 };
 
-// The log sink of a run in T: none for __float128, which the log format does not hold.
-template <class T>
-using LogWriterFor = std::conditional_t<kLogScalar<T>, std::unique_ptr<LogWriter<T>>, std::nullptr_t>;
-
-// Makes the Impl for a prepared run (setup, and for a resume the log to continue).
-Result<std::unique_ptr<Simulation::Impl>> make_simulation_impl(RunSetup setup, const SimulationOptions& options);
+// Makes the Impl for a planned run; `resumed`: the log it continues (null for a new run).
+Result<std::unique_ptr<Simulation::Impl>> make_simulation_impl(RunPlan plan, std::shared_ptr<LogReader> resumed,
+                                                               const SimulationOptions& options);
 
 }  // namespace ede

@@ -15,6 +15,7 @@
 #include "run/finite_guard.hpp"
 #include "run/impulse_meter.hpp"
 #include "run/progress_fraction.hpp"
+#include "run/run_resume.hpp"
 #include "run/run_summary.hpp"
 #include "run/simulation_impl.hpp"
 
@@ -34,11 +35,10 @@ constexpr int kSlicesPerProgress = 4;
 template <class T>
 class SimulationOf final : public Simulation::Impl {
  public:
-  // `setup.initial` has given its disks to the engine already (only its species names are left); px0 and
+  // `plan.initial` has given its disks to the engine already (only its species names are left); px0 and
   // py0 are its momentum, taken before.
-  SimulationOf(RunSetup setup, std::unique_ptr<EngineApi<T>> engine, LogWriterFor<T> log, std::uint64_t first_event,
-               double px0, double py0)
-      : setup_(std::move(setup)), engine_(std::move(engine)), log_(std::move(log)), px0_(px0), py0_(py0) {
+  SimulationOf(RunPlan plan, RunEngine<T> run, std::uint64_t first_event, double px0, double py0)
+      : plan_(std::move(plan)), engine_(std::move(run.engine)), log_(std::move(run.log)), px0_(px0), py0_(py0) {
     Sink<T>* log_sink = nullptr;
     if constexpr (kLogScalar<T>) log_sink = log_.get();
     // The guard passes every finite outcome on to the log (first, as DESIGN.md orders the sinks).
@@ -85,21 +85,21 @@ class SimulationOf final : public Simulation::Impl {
   }
 
   State state() const override {
-    return state_of(engine_->particles(), engine_->time(), engine_->counts().events(), setup_.scene.lx,
-                    setup_.scene.ly, setup_.scene.boundary, setup_.initial.species_names);
+    return state_of(engine_->particles(), engine_->time(), engine_->counts().events(), plan_.scene.lx,
+                    plan_.scene.ly, plan_.scene.boundary, plan_.initial.species_names);
   }
 
   RunSummary summary() const override {
     RunSummary s = summarize(*engine_, px0_, py0_);
-    s.scene = setup_.scene.source_name;
-    s.seed = setup_.scene.seed;
+    s.scene = plan_.scene.source_name;
+    s.seed = plan_.scene.seed;
     s.status = !write_error.empty()                                ? "stopped: the event log could not be written"
                : was_interrupted && status == RunStatus::Running ? "interrupted"
                                                                  : to_string(status);
     if (guard_->tripped()) s.stall_message = guard_->message();
     s.wall_seconds = wall_seconds;
     s.setup_seconds = setup_seconds;
-    s.setup_note = setup_.initial.note;
+    s.setup_note = plan_.initial.note;
     s.events_before = events_before;
     s.collisions_before = collisions_before;
     return s;
@@ -110,9 +110,9 @@ class SimulationOf final : public Simulation::Impl {
   Status write_state_csv(const std::string& path) const override {
     struct stat st {};
     if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
-      return write_state_csv_file(path, engine_->particles(), engine_->time(), setup_.initial.species_names);
+      return write_state_csv_file(path, engine_->particles(), engine_->time(), plan_.initial.species_names);
     const std::string temp = path + ".tmp-" + std::to_string(::getpid());
-    Status s = write_state_csv_file(temp, engine_->particles(), engine_->time(), setup_.initial.species_names);
+    Status s = write_state_csv_file(temp, engine_->particles(), engine_->time(), plan_.initial.species_names);
     if (!s) {
       ::unlink(temp.c_str());
       return Error{"cannot write the final state to '" + path + "': " + s.error().message, ErrorKind::Io};
@@ -149,8 +149,8 @@ class SimulationOf final : public Simulation::Impl {
   }
 
   void measure_impulses() {
-    meter_ = std::make_unique<ImpulseMeter<T>>(setup_.scene.boundary == BoundaryKind::Periodic, setup_.scene.lx,
-                                               setup_.scene.ly);
+    meter_ = std::make_unique<ImpulseMeter<T>>(plan_.scene.boundary == BoundaryKind::Periodic, plan_.scene.lx,
+                                               plan_.scene.ly);
     engine_->add_sink(meter_.get());
   }
   ImpulseSums impulses() const override {
@@ -176,15 +176,15 @@ class SimulationOf final : public Simulation::Impl {
   void report_progress(std::chrono::steady_clock::time_point start, bool done = false) const {
     const EventCounts& c = engine_->counts();
     double energy_ratio = 1;
-    if (setup_.scene.stop.energy_fraction && engine_->initial_kinetic_energy() > 0)
+    if (plan_.scene.stop.energy_fraction && engine_->initial_kinetic_energy() > 0)
       energy_ratio = kinetic_energy(engine_->particles()) / engine_->initial_kinetic_energy();
     const ProgressInputs now{double(engine_->time()), c.events(), c.of(EventKind::Pair), energy_ratio};
-    const double fraction = done ? 1.0 : progress_fraction(setup_.scene.stop, engine_->particles().size(), now);
+    const double fraction = done ? 1.0 : progress_fraction(plan_.scene.stop, engine_->particles().size(), now);
     options.progress(Progress{fraction, c.events(),
                               double(engine_->time()), wall_seconds + seconds_since(start)});
   }
 
-  RunSetup setup_;
+  RunPlan plan_;
   std::unique_ptr<EngineApi<T>> engine_;
   LogWriterFor<T> log_;
   std::unique_ptr<FiniteGuard<T>> guard_;
@@ -192,52 +192,31 @@ class SimulationOf final : public Simulation::Impl {
   double px0_ = 0, py0_ = 0;
 };
 
-// Frees the per-disk arrays of a state the engine has copied (the box and the species names stay).
-void release_disks(InitialState& s) {
-  for (std::vector<double>* v : {&s.x, &s.y, &s.vx, &s.vy, &s.radius, &s.mass, &s.omega, &s.inertia})
-    std::vector<double>().swap(*v);
-  std::vector<std::int32_t>().swap(s.species);
-}
-
 template <class T>
-Result<std::unique_ptr<Simulation::Impl>> make_in(RunSetup setup, const SimulationOptions& options) {
+Result<std::unique_ptr<Simulation::Impl>> make_in(RunPlan plan, const std::shared_ptr<LogReader>& resumed,
+                                                  const SimulationOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   std::optional<Resumption<T>> resumption;
   if constexpr (kLogScalar<T>) {
-    if (setup.resumed_log) {
-      auto r = prepare_resumption<T>(setup.resumed_log);
+    if (resumed) {
+      auto r = prepare_resumption<T>(resumed);
       if (!r) return r.error();
       resumption = std::move(r).value();
     }
   }
   double px0 = 0, py0 = 0;
-  for (std::size_t i = 0; i < setup.initial.size(); ++i) {
-    px0 += setup.initial.mass[i] * setup.initial.vx[i];
-    py0 += setup.initial.mass[i] * setup.initial.vy[i];
+  for (std::size_t i = 0; i < plan.initial.size(); ++i) {
+    px0 += plan.initial.mass[i] * plan.initial.vx[i];
+    py0 += plan.initial.mass[i] * plan.initial.vy[i];
   }
-  auto engine = make_engine<T>(setup.initial, setup.options, resumption ? &resumption->point : nullptr);
-  if (!engine) return Error{setup.scene.source_name + ": " + engine.error().message};
-  release_disks(setup.initial);  // the engine holds them now: ~52 B/disk less before the log writer allocates
-  const std::string log_path = setup.resumed_log ? setup.resumed_log->path() : options.log_path;
-  LogWriterFor<T> log{};
-  if constexpr (kLogScalar<T>) {
-    if (!log_path.empty()) {
-      LogSettings settings = LogSettings::from(setup.scene.log);
-      if (setup.resumed_log) settings.format_version = setup.resumed_log->header().format_version;  // continue as written
-      auto w = LogWriter<T>::create(log_path, LogRunInfo::from(setup.scene, setup.options, setup.initial.species_names),
-                                    settings, resumption ? &resumption->continuation : nullptr,
-                                    resumption ? &resumption->point.disks : nullptr,
-                                    resumption ? &resumption->point.omega : nullptr);
-      if (!w) return Error{w.error().message, ErrorKind::Io};
-      log = std::move(w).value();
-    }
-  }
+  const std::string log_path = resumed ? resumed->path() : options.log_path;
+  auto run = start_run<T>(plan, log_path, resumption ? &*resumption : nullptr);
+  if (!run) return run.error();
   const std::uint64_t before = resumption ? resumption->point.counts.events() : 0;
   const std::uint64_t collisions_before = resumption ? resumption->point.counts.collisions() : 0;
   const std::uint64_t first_logged = resumption ? resumption->continuation.events_before : 0;
-  const Scene scene = setup.scene;
-  auto impl = std::make_unique<SimulationOf<T>>(std::move(setup), std::move(engine).value(), std::move(log), first_logged,
-                                                px0, py0);
+  const Scene scene = plan.scene;
+  auto impl = std::make_unique<SimulationOf<T>>(std::move(plan), std::move(run).value(), first_logged, px0, py0);
   if (options.impulses) impl->measure_impulses();
   impl->scene = scene;
   impl->options = options;
@@ -250,12 +229,14 @@ Result<std::unique_ptr<Simulation::Impl>> make_in(RunSetup setup, const Simulati
 
 }  // namespace
 
-Result<std::unique_ptr<Simulation::Impl>> make_simulation_impl(RunSetup setup, const SimulationOptions& options) {
-  if (setup.scene.scalar == ScalarKind::Float128 && !options.log_path.empty())
-    return Error{setup.scene.source_name + ": float128 runs are for the accuracy study and write no event log (the "
+Result<std::unique_ptr<Simulation::Impl>> make_simulation_impl(RunPlan plan, std::shared_ptr<LogReader> resumed,
+                                                               const SimulationOptions& options) {
+  if (plan.scene.scalar == ScalarKind::Float128 && !options.log_path.empty())
+    return Error{plan.scene.source_name + ": float128 runs are for the accuracy study and write no event log (the "
                      "log format holds float, double and long double): run without a log (no -o)",
                  ErrorKind::Unsupported};
-  return with_engine_scalar(setup.scene.scalar, [&]<class T>() { return make_in<T>(std::move(setup), options); });
+  return with_engine_scalar(plan.scene.scalar,
+                            [&]<class T>() { return make_in<T>(std::move(plan), resumed, options); });
 }
 
 }  // namespace ede

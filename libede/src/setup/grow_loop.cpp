@@ -12,7 +12,7 @@
 #include <cmath>
 #include <string>
 
-#include "core/number_text.hpp"
+#include "ede/number_text.hpp"
 #include "core/rng.hpp"
 #include "setup/grow.hpp"
 #include "setup/grow_predict.hpp"

@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "core/number_text.hpp"
+#include "ede/number_text.hpp"
 #include "setup/blocked_voxels.hpp"
 
 namespace ede::setup_detail {
