@@ -12,8 +12,9 @@ set(EDE_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/ede)
 set(EDE_XXHASH_MIN_VERSION 0.8)
 
 install(TARGETS ede EXPORT edeTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+# The internal tier (include/ede/internal/) is for study/ and the benchmarks in this tree, never for users.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/libede/include/ede DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
-        FILES_MATCHING PATTERN "*.hpp")
+        FILES_MATCHING PATTERN "*.hpp" PATTERN "internal" EXCLUDE)
 install(EXPORT edeTargets NAMESPACE ede:: DESTINATION ${EDE_CMAKE_DIR})
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/edeConfig.cmake.in ${PROJECT_BINARY_DIR}/edeConfig.cmake
                               INSTALL_DESTINATION ${EDE_CMAKE_DIR})

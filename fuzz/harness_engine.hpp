@@ -22,11 +22,8 @@
 #include <cstring>
 #include <string>
 
-#include "core/segment.hpp"
-#include "engine/engine.hpp"
-#include "log/log_reader.hpp"
-#include "log/log_writer.hpp"
-#include "replay/replay.hpp"
+#include "ede/internal/log.hpp"
+#include "ede/internal/run.hpp"
 
 namespace ede::fuzz {
 
@@ -147,63 +144,57 @@ inline bool same(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0
 inline bool fuzz_engine(const std::uint8_t* data, std::size_t size) {
   Bytes in(data, size);
   const std::uint8_t flags = in.byte();
-  ede::EngineOptions o;
-  o.boundary = (flags & 1) ? ede::BoundaryKind::Periodic : ede::BoundaryKind::Walls;
+  // The run as a scene made in code (box 1 x 1), planned and started the one way every run is
+  // (run/run_plan.hpp): its log's header then says what the engine runs, restitution and roughness included.
+  ede::Scene scene;
+  scene.source_name = "<fuzz>";
+  scene.boundary = (flags & 1) ? ede::BoundaryKind::Periodic : ede::BoundaryKind::Walls;
+  ede::PhysicsSpec& ph = scene.physics;
   if (flags & 2) {
-    o.physics.restitution = in.unit();
-    o.physics.wall_restitution = (flags & 8) ? in.unit() : 1.0;
-    if (flags & 4) o.physics.tc = 1e-4 * (1 + in.unit());
+    ph.restitution = in.unit();
+    ph.wall_restitution = (flags & 8) ? in.unit() : 1.0;
+    if (flags & 4) ph.tc = 1e-4 * (1 + in.unit());
   }
-  o.stop.events = 3000;
-  o.rebuild_interval = 500 + 10 * in.byte();
-  o.stall_limit = 20000;
+  scene.stop.events = 3000;
+  scene.rebuild_interval = 500 + 10 * in.byte();
+  scene.log.chunk_events = 64;
+  scene.log.keyframe_interval = 256;
   ede::InitialState s = make_state(in, (flags & 16) != 0);
-  if ((flags & 32) && o.boundary == ede::BoundaryKind::Walls) add_segments(in, (flags & 2) != 0, s, o.physics);
+  if ((flags & 32) && scene.boundary == ede::BoundaryKind::Walls) add_segments(in, (flags & 2) != 0, s, ph);
   // Rough disks (not with segments): beta for pairs and walls, -1, +1 or anywhere between; spins up to
-  // ~|v| / r; I = f m r^2 with f in [0.1, 1].
-  const bool rough = (flags & 64) && o.physics.segments.empty();
+  // ~|v| / r; I = f m r^2 with f in [0.1, 1]. Disks that spin make the run rough (plan_run_from).
+  const bool rough = (flags & 64) && ph.segments.empty();
   if (rough) {
     const auto beta = [&] {
       const std::uint8_t b = in.byte();
       return b < 64 ? -1.0 : b < 128 ? 1.0 : 2 * in.unit() - 1;
     };
-    o.physics.roughness = beta();
-    o.physics.wall_roughness = beta();
-    o.rotation = true;
+    ph.roughness = beta();
+    ph.wall_roughness = beta();
     for (std::size_t i = 0; i < s.size(); ++i) {
       s.inertia.push_back((0.1 + 0.9 * in.unit()) * s.mass[i] * s.radius[i] * s.radius[i]);
       s.omega.push_back((2 * in.unit() - 1) / s.radius[i]);
     }
   }
   if (s.size() == 0) return true;
-  auto made = ede::make_engine<double>(s, o);
-  CHECK_OR_FAIL(made.ok());  // the grid placement is valid by construction
-  ede::EngineApi<double>& engine = *made.value();
+  const std::size_t disks = s.size();
+  auto plan = ede::plan_run_from(scene, std::move(s));
+  CHECK_OR_FAIL(plan.ok());  // the grid placement is valid by construction
+  plan.value().options.stall_limit = 20000;
+  const ede::EngineOptions o = plan.value().options;
 
   const MemFile file("fuzz-engine-log");
   if (!file.ok()) return true;
   const std::string path = file.path();
-  ede::LogRunInfo info;
-  info.species_names = s.species_names;
-  info.boundary = o.boundary;
-  info.rebuild_interval = o.rebuild_interval;
-  for (const ede::SegmentSpec& g : o.physics.segments)  // replay predicts segment events from these
-    info.segments.insert(info.segments.end(), {g.from[0], g.from[1], g.to[0], g.to[1], g.restitution});
-  if (rough) {  // the header's 1 + beta: replay predicts the spins from them
-    info.rotation = true;
-    info.pair_roughness = {o.physics.roughness};
-    info.wall_roughness = o.physics.wall_roughness;
-  }
-  ede::LogSettings settings;
-  settings.chunk_events = 64;
-  settings.keyframe_interval = 256;
-  auto writer = ede::LogWriter<double>::create(path, info, settings);
-  CHECK_OR_FAIL(writer.ok());
-  engine.add_sink(writer.value().get());
+  auto run = ede::start_run<double>(plan.value(), path);
+  CHECK_OR_FAIL(run.ok());
+  ede::EngineApi<double>& engine = *run.value().engine;
+  ede::LogWriter<double>& writer = *run.value().log;
+  engine.add_sink(&writer);
 
   const Totals start = totals(engine.particles());
   const auto keeps = [](double beta) { return beta == -1 || beta == 1; };
-  const bool elastic = o.physics.elastic() && (!rough || (keeps(o.physics.roughness) && keeps(o.physics.wall_roughness)));
+  const bool elastic = ph.elastic() && (!rough || (keeps(ph.roughness) && keeps(ph.wall_roughness)));
   ede::RunStatus status;
   while ((status = engine.run(250)) == ede::RunStatus::Running) {
     CHECK_OR_FAIL(engine.check_invariants(1e-6).empty());
@@ -216,14 +207,14 @@ inline bool fuzz_engine(const std::uint8_t* data, std::size_t size) {
     }
   }
   CHECK_OR_FAIL(engine.check_invariants(1e-6).empty());
-  CHECK_OR_FAIL(writer.value()->error().empty());
+  CHECK_OR_FAIL(writer.error().empty());
 
   auto log = ede::LogReader::open(path);
   CHECK_OR_FAIL(log.ok() && log.value()->complete());
   auto replay = ede::Replay<double>::create(log.value());
   CHECK_OR_FAIL(replay.ok());
   CHECK_OR_FAIL(replay.value()->seek_time(engine.time()).ok());
-  for (std::size_t i = 0; i < s.size(); ++i) {
+  for (std::size_t i = 0; i < disks; ++i) {
     const ede::Disk<double>& a = replay.value()->particles().disk[i];
     const ede::Disk<double>& b = engine.particles().disk[i];
     CHECK_OR_FAIL(same(a.x, b.x) && same(a.y, b.y) && same(a.vx, b.vx) && same(a.vy, b.vy) && same(a.t, b.t));

@@ -2,7 +2,6 @@
 #include "study/accuracy_settings.hpp"
 
 #include "ede/scene.hpp"
-#include "setup/setup.hpp"
 #include "study/measurement.hpp"
 
 namespace ede::study {
@@ -52,10 +51,9 @@ Result<StudyScene> load_study_scene(const std::string& path, const Setting& sett
   overrides.push_back(scalar_override(setting.precision));
   auto scene = load_scene_file(path, as_overrides(overrides));
   if (!scene) return scene.error();
-  auto initial = build_initial_state(scene.value());
-  if (!initial) return initial.error();
-  StudyScene s{std::move(scene).value(), std::move(initial).value(), {}, {}};
-  s.options = engine_options_from(s.scene, s.initial.size());
+  auto plan = plan_run(scene.value());
+  if (!plan) return plan.error();
+  StudyScene s{std::move(plan.value().scene), std::move(plan.value().initial), plan.value().options, {}};
   s.variant.contact = setting.contact;
   return s;
 }

@@ -13,10 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "core/particles.hpp"
 #include "ede/error.hpp"
+#include "ede/internal/run.hpp"
 #include "ede/scene.hpp"
-#include "engine/engine.hpp"
 #include "study/study_engine.hpp"
 
 namespace ede::study {

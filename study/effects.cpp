@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "setup/setup.hpp"
+#include "ede/internal/run.hpp"
 #include "study/cpu_cycles.hpp"
 #include "study/measurement.hpp"
 #include "study/study_engine.hpp"
@@ -67,11 +67,11 @@ Setup load(const EffectsPlan& plan, const EffectConfig& config) {
   Setup s;
   auto scene = load_scene_file(plan.scene, as_overrides(all));
   if (!scene) return s.failure = scene.error().message, s;
-  auto initial = build_initial_state(scene.value());
-  if (!initial) return s.failure = initial.error().message, s;
+  auto run = plan_run(scene.value());
+  if (!run) return s.failure = run.error().message, s;
   s.events = scene.value().stop.events.value_or(0);
-  s.options = engine_options_from(scene.value(), initial.value().size());
-  s.initial = std::move(initial).value();
+  s.options = run.value().options;
+  s.initial = std::move(run.value().initial);
   return s;
 }
 

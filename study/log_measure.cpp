@@ -14,13 +14,11 @@
 #include <memory>
 #include <sstream>
 
-#include "study/measurement.hpp"
-#include "study/cpu_cycles.hpp"
-#include "log/log_reader.hpp"
-#include "replay/replay.hpp"
+#include "ede/internal/log.hpp"
+#include "ede/internal/run.hpp"
 #include "ede/scene.hpp"
-#include "setup/setup.hpp"
-#include "core/scalar_dispatch.hpp"
+#include "study/cpu_cycles.hpp"
+#include "study/measurement.hpp"
 
 namespace ede::study {
 
@@ -97,15 +95,14 @@ int run_child(const RunConfig& c, std::string& out) {
   if (c.events) overrides.push_back({"stop.events=" + std::to_string(c.events)});  // after them: it wins
   auto scene = load_scene_file(c.scene, overrides);
   if (!scene) return out = scene.error().message, 1;
-  auto initial = build_initial_state(scene.value());
-  if (!initial) return out = initial.error().message, 1;
-  const EngineOptions options = engine_options_from(scene.value(), initial.value().size());
+  auto plan = plan_run(scene.value());
+  if (!plan) return out = plan.error().message, 1;
   if (scene.value().scalar == ScalarKind::Float128)
     return out = c.scene + ": float128 runs write no event log (the log format holds float, double and long "
                            "double); benchmark them with ede-bench speed",
            1;
   return with_scalar(scene.value().scalar, [&]<class T>() {
-    return timed_run<T>(c, scene.value(), initial.value(), options, out);
+    return timed_run<T>(c, plan.value().scene, plan.value().initial, plan.value().options, out);
   });
 }
 

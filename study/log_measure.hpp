@@ -11,8 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "log/log_column_sizes.hpp"
-#include "log/log_writer.hpp"
+#include "ede/internal/log.hpp"
 #include "study/study_engine.hpp"
 
 namespace ede::study {

@@ -6,11 +6,8 @@
 #include <sstream>
 #include <utility>
 
-#include "core/rng.hpp"
-#include "engine/engine.hpp"
-#include "setup/placement_grid.hpp"
-#include "setup/setup.hpp"
-#include "setup/setup_random_placement.hpp"
+#include "ede/internal/run.hpp"
+#include "ede/internal/setup.hpp"
 #include "study/measurement.hpp"
 #include "study/timed_run.hpp"
 
@@ -79,18 +76,18 @@ int measure_in_child(std::uint64_t n, const SetupPlan& plan, std::string& out) {
     auto scene = parse_scene_text(scene_text(n, plan, placement), "setup-bench.toml");
     if (!scene) return out = scene.error().message, 1;
     const double start = thread_cpu_seconds();
-    if (auto initial = build_initial_state(scene.value()); !initial) return out = initial.error().message, 1;
+    if (auto planned = plan_run(scene.value()); !planned) return out = planned.error().message, 1;
     o << " " << key << "=" << (thread_cpu_seconds() - start);
   }
   const double cpu0 = thread_cpu_seconds();
   auto scene = parse_scene_text(scene_text(n, plan, "kind = \"random\""), "setup-bench.toml");
   if (!scene) return out = scene.error().message, 1;
-  auto initial = build_initial_state(scene.value());
-  if (!initial) return out = initial.error().message, 1;
+  auto planned = plan_run(scene.value());
+  if (!planned) return out = planned.error().message, 1;
   const double cpu1 = thread_cpu_seconds();
-  auto engine = make_engine<double>(initial.value(), engine_options_from(scene.value(), initial.value().size()));
-  if (!engine) return out = engine.error().message, 1;
-  engine.value()->run(0);  // starts: every disk's first prediction, no event
+  auto run = start_run<double>(planned.value());
+  if (!run) return out = run.error().message, 1;
+  run.value().engine->run(0);  // starts: every disk's first prediction, no event
   const double cpu2 = thread_cpu_seconds();
   o << " setup=" << (cpu1 - cpu0) << " engine_start=" << (cpu2 - cpu1);
   out = o.str();

@@ -7,9 +7,7 @@
 #include <cstdio>
 #include <sstream>
 
-#include "core/scalar_dispatch.hpp"
-#include "engine/engine.hpp"
-#include "setup/setup.hpp"
+#include "ede/internal/run.hpp"
 #include "study/measurement.hpp"
 #include "study/timed_run.hpp"
 
@@ -26,17 +24,17 @@ int measure_in_child(const std::string& path, const SpeedPlan& plan, std::uint64
   const auto t0 = std::chrono::steady_clock::now();
   auto scene = load_scene_file(path, overrides);
   if (!scene) return out = scene.error().message, 1;
-  auto initial = build_initial_state(scene.value());
-  if (!initial) return out = initial.error().message, 1;
+  auto planned = plan_run(scene.value());
+  if (!planned) return out = planned.error().message, 1;
   const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  EngineOptions options = engine_options_from(scene.value(), initial.value().size());
-  options.algorithm = algorithm;
+  planned.value().options.algorithm = algorithm;
+  const std::size_t disks = planned.value().initial.size();
   return with_engine_scalar(scene.value().scalar, [&]<class T>() {
-    auto made = make_engine<T>(initial.value(), options);
-    if (!made) return out = made.error().message, 1;
+    auto run = start_run<T>(planned.value());
+    if (!run) return out = run.error().message, 1;
     std::ostringstream o;
     o.precision(17);
-    o << timed_run_report(*made.value()) << " disks=" << initial.value().size() << " setup=" << setup;
+    o << timed_run_report(*run.value().engine) << " disks=" << disks << " setup=" << setup;
     out = o.str();
     return 0;
   });

@@ -7,11 +7,8 @@
 #include <cstring>
 #include <string>
 
-#include "engine/engine.hpp"
-#include "log/log_reader.hpp"
-#include "log/log_writer.hpp"
-#include "replay/replay.hpp"
-#include "setup/setup.hpp"
+#include "ede/internal/log.hpp"
+#include "ede/internal/run.hpp"
 #include "study/measurement.hpp"
 
 namespace ede::study {
@@ -60,19 +57,17 @@ StressOutcome run_scene(const std::string& name, const std::string& text, const 
   };
   auto scene = parse_scene_text(text, name + ".toml", as_overrides(o.overrides));
   if (!scene) return fail(scene.error().message);
-  auto initial = build_initial_state(scene.value());
-  if (!initial) return fail(initial.error().message);
   if (scene.value().scalar != ScalarKind::Double) return fail("the stress study runs in double only");
-  const EngineOptions options = engine_options_from(scene.value(), initial.value().size());
-  auto made = make_engine<double>(initial.value(), options);
-  if (!made) return fail(made.error().message);
-  EngineApi<double>& engine = *made.value();
-  out.disks = initial.value().size();
+  auto plan = plan_run(scene.value());
+  if (!plan) return fail(plan.error().message);
+  const EngineOptions& options = plan.value().options;
+  out.disks = plan.value().initial.size();
   const std::string log_path = o.out_dir + "/stress-" + name + ".ede";
-  auto writer = LogWriter<double>::create(log_path, LogRunInfo::from(scene.value(), options, initial.value().species_names),
-                                          LogSettings::from(scene.value().log));
-  if (!writer) return fail(writer.error().message);
-  engine.add_sink(writer.value().get());
+  auto run = start_run<double>(plan.value(), log_path);
+  if (!run) return fail(run.error().message);
+  EngineApi<double>& engine = *run.value().engine;
+  LogWriter<double>& writer = *run.value().log;
+  engine.add_sink(&writer);
 
   const bool elastic = options.physics.restitution == 1.0 && options.physics.wall_restitution == 1.0;
   const Totals start = totals(engine.particles());
@@ -96,13 +91,13 @@ StressOutcome run_scene(const std::string& name, const std::string& text, const 
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (status == RunStatus::Running)  // a check failed: close the log where we stopped (else the engine did)
-    writer.value()->on_finish(engine.time(), engine.particles(), status);
+    writer.on_finish(engine.time(), engine.particles(), status);
   out.events = engine.counts().events();
   out.status = status == RunStatus::ReachedEvents ? "ran its events" : to_string(status);
   out.energy_ratio = totals(engine.particles()).energy / start.energy;
   out.tc_share = engine.counts().collisions() ? double(engine.counts().tc_elastic) / double(engine.counts().collisions()) : 0;
   if (status == RunStatus::Stalled) out.failure = engine.stall_message();
-  if (!writer.value()->error().empty()) out.failure = writer.value()->error();
+  if (!writer.error().empty()) out.failure = writer.error();
   if (!out.failure.empty()) return out;
 
   auto log = LogReader::open(log_path);

@@ -10,9 +10,8 @@
 
 #include <memory>
 
-#include "core/initial_state.hpp"
 #include "ede/error.hpp"
-#include "engine/engine.hpp"
+#include "ede/internal/engine.hpp"
 
 namespace ede::study {
 

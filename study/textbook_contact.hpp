@@ -4,8 +4,7 @@
 // product library: an engine with this root is built only by study/textbook_engine.cpp.
 #pragma once
 
-#include "core/geometry.hpp"
-#include "core/scalar_math.hpp"
+#include "ede/internal/physics.hpp"
 
 namespace ede {
 

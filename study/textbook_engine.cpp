@@ -7,7 +7,7 @@
 
 #include <type_traits>
 
-#include "engine/engine_checks.hpp"
+#include "ede/internal/engine_template.hpp"
 #include "study/textbook_contact.hpp"
 
 namespace ede::study {

@@ -23,10 +23,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "engine/collide.hpp"
-#include "setup/setup.hpp"
-#include "engine/engine_core.hpp"
-#include "core/number_text.hpp"
+#include "ede/internal/engine_template.hpp"
+#include "ede/internal/physics.hpp"
+#include "ede/internal/setup.hpp"
+#include "ede/number_text.hpp"
 
 namespace ede {
 

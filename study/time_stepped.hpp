@@ -16,7 +16,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/initial_state.hpp"
+#include "ede/internal/engine.hpp"
 #include "ede/error.hpp"
 #include "ede/scene.hpp"
 

@@ -12,7 +12,7 @@
 
 #include "commands.hpp"
 #include "ede/scene.hpp"
-#include "setup/setup.hpp"
+#include "ede/internal/setup.hpp"
 #include "study/measurement.hpp"
 
 namespace ede::bench {

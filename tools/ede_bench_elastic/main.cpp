@@ -13,9 +13,9 @@
 
 #include "command_line.hpp"
 #include "ede/scene.hpp"
-#include "engine/engine_checks.hpp"
+#include "ede/internal/engine_template.hpp"
+#include "ede/internal/run.hpp"
 #include "report_error.hpp"
-#include "setup/setup.hpp"
 #include "study/timed_run.hpp"
 
 namespace {
@@ -44,12 +44,13 @@ int main(int argc, char** argv) {
   if (sc.boundary != BoundaryKind::Walls || !sc.physics.elastic() || sc.physics.has_gravity() ||
       sc.physics.tc > 0 || sc.scalar != ScalarKind::Double)
     return fail(path + ": this binary runs elastic gases in a walled box, in double, only");
-  auto initial = build_initial_state(sc);
-  if (!initial) return fail(initial.error().message);
-  const EngineOptions options = engine_options_from(sc, initial.value().size());
+  // Planned as every run is (plan_run); only the engine is made here, from the one instantiation.
+  auto plan = plan_run(sc);
+  if (!plan) return fail(plan.error().message);
+  const RunPlan& p = plan.value();
   GridShape shape;
-  if (Status s = check_engine_input(initial.value(), options, shape); !s) return fail(s.error().message);
-  Engine<double, WallsBoundary, Elastic> engine(initial.value(), options, shape, nullptr);
-  std::printf("%s disks=%zu\n", study::timed_run_report(engine).c_str(), initial.value().size());
+  if (Status s = check_engine_input(p.initial, p.options, shape); !s) return fail(s.error().message);
+  Engine<double, WallsBoundary, Elastic> engine(p.initial, p.options, shape, nullptr);
+  std::printf("%s disks=%zu\n", study::timed_run_report(engine).c_str(), p.initial.size());
   return 0;
 }

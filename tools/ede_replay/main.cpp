@@ -8,8 +8,8 @@
 //   ede-replay diff A B                              the first event at which two logs differ
 //   ede-replay convert LOG -o OUT [--format-version 1|2]   the same log in another format version
 //
-// Thin: one file per subcommand, each parsing its options and calling libede (LogReader, Replay, the
-// engine for verify). A first argument that is not a subcommand makes the command `state`, so the common
+// Thin: one file per subcommand, each parsing its options and calling the public ede::Log (states, events,
+// verify, diff, convert). A first argument that is not a subcommand makes the command `state`, so the common
 // case reads `ede-replay run.ede --at 5`. Exit status: 0 success (verify: identical; diff: identical),
 // 1 an unreadable log or a difference found, 2 a bad command line.
 #include <CLI/CLI.hpp>
