@@ -38,8 +38,8 @@ std::string cooling_log(const std::string& name) {
 TEST_CASE("crater energy: the crossing is the first event whose replayed state is below the fraction",
           "[analysis][crater]") {
   const std::string path = cooling_log<double>("crater-energy.ede");
-  const auto log = open_log(path);
-  REQUIRE(log->total_events() > 1000);
+  const Log log = open_public_log(path);
+  REQUIRE(log.info().events > 1000);
   auto curve = energy_fraction_curve(log, 0.3, 101);
   REQUIRE(curve);
   const EnergyFractionCurve& c = curve.value();
@@ -48,10 +48,10 @@ TEST_CASE("crater energy: the crossing is the first event whose replayed state i
   auto replay = replay_of<double>(path);
   REQUIRE(replay->seek_event(0));
   CHECK(c.initial_energy == kinetic_energy(replay->particles()));
-  CHECK(c.initial_energy == log->header().initial_energy);
+  CHECK(c.initial_energy == log.info().initial_energy);
   const double threshold = 0.3 * c.initial_energy;
   std::uint64_t first = 0;
-  REQUIRE(replay->for_each_event(0, log->total_events(), [&](const ReplayedEvent<double>&) {
+  REQUIRE(replay->for_each_event(0, log.info().events, [&](const ReplayedEvent<double>&) {
     if (kinetic_energy(replay->particles()) <= threshold) return first = replay->events_applied(), false;
     return true;
   }));
@@ -76,11 +76,11 @@ TEST_CASE("crater energy: the crossing is the first event whose replayed state i
 TEST_CASE("crater energy: a fraction never reached ends at the log's end, fraction 1 at event 0",
           "[analysis][crater]") {
   const std::string path = cooling_log<double>("crater-energy-end.ede");
-  const auto log = open_log(path);
+  const Log log = open_public_log(path);
   auto never = energy_fraction_curve(log, 1e-9);
   REQUIRE(never);
   CHECK_FALSE(never.value().reached);
-  CHECK(never.value().event == log->total_events());
+  CHECK(never.value().event == log.info().events);
   CHECK(never.value().time == never.value().end_time);
   CHECK(never.value().end_fraction > 1e-9);
 
@@ -97,7 +97,7 @@ TEST_CASE("crater energy: a fraction never reached ends at the log's end, fracti
 
 TEST_CASE("crater energy: a float log is walked in float", "[analysis][crater]") {
   const std::string path = cooling_log<float>("crater-energy-float.ede");
-  const auto log = open_log(path);
+  const Log log = open_public_log(path);
   auto curve = energy_fraction_curve(log, 0.3);
   REQUIRE(curve);
   REQUIRE(curve.value().reached);
@@ -110,7 +110,7 @@ TEST_CASE("crater energy: a float log is walked in float", "[analysis][crater]")
 
 TEST_CASE("crater measure: the state at the crossing, at a time, the bed by species", "[analysis][crater]") {
   const std::string path = cooling_log<double>("crater-measure.ede");
-  const auto log = open_log(path);
+  const Log log = open_public_log(path);
 
   CraterRequest req;
   req.energy_fraction = 0.3;

@@ -9,8 +9,6 @@
 #include <vector>
 
 #include "ede/analysis.hpp"
-#include "ede/analysis.hpp"
-#include "analysis/log_series.hpp"
 #include "log/log_stats.hpp"
 #include "ede/scene.hpp"
 #include "setup/setup.hpp"
@@ -51,7 +49,7 @@ std::string gas_scene(const std::string& boundary, int count, double radius, con
          "\n\n[species.velocity]\nkind = \"speed\"\nspeed = 1.0\n\n[stop]\n" + stop + "\n";
 }
 
-std::vector<double> grid_of(const std::shared_ptr<LogReader>& log, int points) {
+std::vector<double> grid_of(const Log& log, int points) {
   auto o = log_overview(log);
   REQUIRE(o);
   std::vector<double> g;
@@ -59,7 +57,7 @@ std::vector<double> grid_of(const std::shared_ptr<LogReader>& log, int points) {
   return g;
 }
 
-LogSeries series_of(const std::shared_ptr<LogReader>& log, const std::vector<double>& times) {
+LogSeries series_of(const Log& log, const std::vector<double>& times) {
   auto s = log_series(log, times);
   INFO((s ? "" : s.error().message));
   REQUIRE(s);
@@ -69,7 +67,7 @@ LogSeries series_of(const std::shared_ptr<LogReader>& log, const std::vector<dou
 // The series against fresh sums over the replayed state at each grid time.
 template <class T>
 void check_series_matches_replay(const std::string& path, int points) {
-  const auto log = open_log(path);
+  const auto log = open_public_log(path);
   const std::vector<double> times = grid_of(log, points);
   const LogSeries s = series_of(log, times);
   REQUIRE(s.time == times);
@@ -92,7 +90,7 @@ void check_series_matches_replay(const std::string& path, int points) {
 
 // Pooled snapshots of a log at `count` times spread over its second half (spacing several mean free
 // times when the run lasts tens of them): the relaxed part of a run started far from equilibrium.
-GasAverages pooled_second_half(const std::shared_ptr<LogReader>& log, int count, std::vector<double>* energies,
+GasAverages pooled_second_half(const Log& log, int count, std::vector<double>* energies,
                                std::vector<double>* light_speeds = nullptr) {
   auto o = log_overview(log);
   REQUIRE(o);
@@ -137,13 +135,13 @@ TEST_CASE("an action (velocity reversal) resynchronises the energy walk", "[anal
 
 TEST_CASE("energy is conserved to 1e-12 when xi = 1 and never rises when xi < 1", "[analysis]") {
   SECTION("elastic") {
-    const auto log = open_log(
+    const auto log = open_public_log(
         run_scene<double>(gas_scene("walls", 300, 0.01, "collisions_per_particle = 30"), "series-elastic.ede"));
     const LogSeries s = series_of(log, grid_of(log, 2000));
     for (const double e : s.kinetic_energy) REQUIRE(std::abs(e / s.kinetic_energy[0] - 1) <= 1e-12);
   }
   SECTION("inelastic, xi = 0.8") {
-    const auto log = open_log(run_scene<double>(
+    const auto log = open_public_log(run_scene<double>(
         gas_scene("walls", 300, 0.01, "collisions_per_particle = 15", "[physics]\nrestitution = 0.8\n"),
         "series-inelastic.ede"));
     const LogSeries s = series_of(log, grid_of(log, 2000));
@@ -156,10 +154,10 @@ TEST_CASE("energy is conserved to 1e-12 when xi = 1 and never rises when xi < 1"
 
 TEST_CASE("collision counts equal the log's pair and wall events", "[analysis]") {
   const std::string path = run_scene<double>(gas_scene("walls", 300, 0.01, "collisions_per_particle = 20"), "series-counts.ede");
-  const auto log = open_log(path);
+  const auto log = open_public_log(path);
   const std::vector<double> times = grid_of(log, 40);
   const LogSeries s = series_of(log, times);
-  auto kinds = count_logged_kinds(*log);
+  auto kinds = log.count_events();
   REQUIRE(kinds);
   CHECK(s.pair_collisions.back() == kinds.value().of(EventKind::Pair));
   CHECK(s.wall_collisions.back() == kinds.value().of(EventKind::Wall));
@@ -167,7 +165,7 @@ TEST_CASE("collision counts equal the log's pair and wall events", "[analysis]")
   // At every grid time: the events with time <= t, counted directly.
   auto replay = replay_of<double>(path);
   std::vector<std::uint64_t> pairs(times.size(), 0);
-  REQUIRE(replay->for_each_event(0, log->total_events(), [&](const ReplayedEvent<double>& e) {
+  REQUIRE(replay->for_each_event(0, log.info().events, [&](const ReplayedEvent<double>& e) {
     for (std::size_t k = 0; k < times.size(); ++k) pairs[k] += (e.kind == EventKind::Pair && e.time <= times[k]) ? 1 : 0;
     return true;
   }));
@@ -179,7 +177,7 @@ TEST_CASE("collision counts equal the log's pair and wall events", "[analysis]")
 
 TEST_CASE("snapshots are the replayed velocities, speed classes sum to 100%", "[analysis]") {
   const std::string path = run_scene<double>(gas_scene("periodic", 200, 0.01, "time = 0.5"), "series-snap.ede");
-  const auto log = open_log(path);
+  const auto log = open_public_log(path);
   const std::vector<double> times = {0, 0.1, 0.1, 0.37, 0.5};
   auto replay = replay_of<double>(path);
   double v0 = 0;
@@ -201,7 +199,7 @@ TEST_CASE("snapshots are the replayed velocities, speed classes sum to 100%", "[
 }
 
 TEST_CASE("series and snapshots refuse times after the end or out of order", "[analysis]") {
-  const auto log = open_log(run_scene<double>(gas_scene("periodic", 50, 0.01, "time = 0.2"), "series-bad.ede"));
+  const auto log = open_public_log(run_scene<double>(gas_scene("periodic", 50, 0.01, "time = 0.2"), "series-bad.ede"));
   const auto after = log_series(log, {0, 0.3});
   REQUIRE_FALSE(after);
   CHECK_THAT(after.error().message, Catch::Contains("after the end of the log"));
@@ -217,7 +215,7 @@ TEST_CASE("a gas relaxed from one speed follows Maxwell-Boltzmann, the initial s
   // uniform on [0, 1]; p > 1e-3 fails for one seed in a thousand and the run is deterministic, so the
   // threshold is a floor against a wrong distribution, not a flaky statistic. kT is measured on the
   // sample (as ede-stats does), which only makes p larger.
-  const auto log = open_log(
+  const auto log = open_public_log(
       run_scene<double>(gas_scene("periodic", 400, 0.01, "collisions_per_particle = 50"), "series-relax.ede"));
   std::vector<double> e;
   const GasAverages avg = pooled_second_half(log, 6, &e);
@@ -242,7 +240,7 @@ TEST_CASE("a mixture of masses m0 and 4 m0 shares its energy equally, mean speed
       "[[species]]\nname = \"heavy\"\ncount = 300\nradius = 0.01\nmass = 4.0\n"
       "[species.velocity]\nkind = \"speed\"\nspeed = 1.0\n"
       "[stop]\ncollisions_per_particle = 60\n";
-  const auto log = open_log(run_scene<double>(toml, "series-mixture.ede"));
+  const auto log = open_public_log(run_scene<double>(toml, "series-mixture.ede"));
   const std::vector<SpeciesStats> st = pooled_second_half(log, 6, nullptr).stats();
   REQUIRE(st.size() == 3);
   const SpeciesStats &light = st[0], &heavy = st[1];

@@ -10,7 +10,7 @@
 #include <random>
 
 #include "ede/analysis.hpp"
-#include "analysis/pressure.hpp"
+#include "ede/pressure.hpp"
 #include "log_test_support.hpp"
 
 using namespace ede;
@@ -19,7 +19,7 @@ using namespace ede::test;
 namespace {
 
 PressureReport measure(const std::string& path, PressureOptions o = {}) {
-  auto r = measure_pressure(open_log(path), o);
+  auto r = measure_pressure(open_public_log(path), o);
   INFO((r ? "" : r.error().message));
   REQUIRE(r);
   return r.value();
@@ -231,7 +231,7 @@ TEST_CASE("measure_pressure refuses an empty window, a window past the log's end
   InitialState s = box();
   s.add(0.5, 0.5, 2.0, 0.0, 0.1, 3.0, 0);
   const auto run = run_logged<double>(s, walls_until(2), "pressure-refuse.ede");
-  const auto log = open_log(run.path);
+  const auto log = open_public_log(run.path);
   const auto error_of = [&](const PressureOptions& o) {
     auto r = measure_pressure(log, o);
     return r ? std::string() : r.error().message;

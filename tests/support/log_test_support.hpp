@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "ede/log.hpp"
 #include "log/log_reader.hpp"
 #include "log/log_writer.hpp"
 #include "replay/replay.hpp"
@@ -53,6 +54,13 @@ inline std::shared_ptr<LogReader> open_log(const std::string& path) {
   auto log = LogReader::open(path);
   if (!log) throw std::runtime_error(log.error().message);
   return log.value();
+}
+
+// The same log through the public face, for the analyses (they take a const Log&).
+inline Log open_public_log(const std::string& path) {
+  auto log = Log::open(path);
+  if (!log) throw std::runtime_error(log.error().message);
+  return std::move(log).value();
 }
 
 template <class T>

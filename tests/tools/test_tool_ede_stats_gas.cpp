@@ -6,8 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "log/log_reader.hpp"
-#include "log/log_stats.hpp"
+#include "ede/log.hpp"
 #include "tool_runner.hpp"
 
 using namespace ede::test;
@@ -200,9 +199,7 @@ TEST_CASE("ede-stats collisions: counts equal the log's, speed classes sum to 10
   CHECK(rows[0] ==
         "time,pair_collisions,wall_collisions,collisions_per_particle,collision_rate,mean_free_time,"
         "slow_percent,medium_percent,fast_percent,enskog_rate");
-  auto reader = ede::LogReader::open(log);
-  REQUIRE(reader);
-  auto kinds = ede::count_logged_kinds(*reader.value());
+  auto kinds = ede::Log::open(log).value().count_events();
   REQUIRE(kinds);
   const std::vector<std::string> last = csv_fields(rows.back());
   CHECK(std::stoull(last[1]) == kinds.value().of(ede::EventKind::Pair));

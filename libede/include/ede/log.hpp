@@ -179,10 +179,9 @@ class Log {
   // header, events and keyframes, so every state read from the copy is bit-identical to this log's.
   Status convert(const std::string& out_path, std::uint32_t format_version = 2) const;
 
-  struct Impl;
-  const Impl& impl() const { return *impl_; }
-
  private:
+  struct Impl;
+  friend struct LogAccess;  // the library's own code reaches the log's reader through it (internal)
   explicit Log(std::shared_ptr<Impl> impl);
   std::shared_ptr<Impl> impl_;
 };

@@ -1,4 +1,5 @@
-// The crater's log layer on a LogReader (ede/crater.hpp has the geometry, the types and the Log overloads).
+// The bed selection on a log's header alone (ede/crater.hpp has the geometry, the types and the analyses
+// over a Log): a pure function on plain data, so its tests need no log.
 #pragma once
 
 #include <memory>
@@ -9,9 +10,6 @@
 
 namespace ede {
 
-Result<EnergyFractionCurve> energy_fraction_curve(std::shared_ptr<const LogReader> log, double fraction,
-                                                  std::size_t points = 501);
 Result<BedSelection> select_bed(const LogHeaderInfo& header, const std::string& name);
-Result<CraterMeasurement> measure_crater(std::shared_ptr<const LogReader> log, const CraterRequest& request);
 
 }  // namespace ede

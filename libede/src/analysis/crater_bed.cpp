@@ -8,6 +8,7 @@
 #include <string>
 
 #include "analysis/crater.hpp"
+#include "replay/log_impl.hpp"
 
 namespace ede {
 
@@ -57,6 +58,10 @@ Result<BedSelection> select_bed(const LogHeaderInfo& h, const std::string& name)
   b.is_bed.resize(h.species.size());
   for (std::size_t i = 0; i < h.species.size(); ++i) b.is_bed[i] = h.species[i] < chosen.size() && chosen[h.species[i]];
   return b;
+}
+
+Result<BedSelection> select_bed(const Log& log, const std::string& name) {
+  return select_bed(reader_of(log)->header(), name);
 }
 
 }  // namespace ede

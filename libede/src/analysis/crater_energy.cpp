@@ -12,6 +12,7 @@
 
 #include "analysis/crater.hpp"
 #include "engine/engine.hpp"
+#include "replay/log_impl.hpp"
 #include "replay/replay.hpp"
 
 namespace ede {
@@ -90,8 +91,8 @@ Result<EnergyFractionCurve> walk(std::shared_ptr<const LogReader> log, double fr
 
 }  // namespace
 
-Result<EnergyFractionCurve> energy_fraction_curve(std::shared_ptr<const LogReader> log, double fraction,
-                                                  std::size_t points) {
+Result<EnergyFractionCurve> energy_fraction_curve(const Log& opened, double fraction, std::size_t points) {
+  std::shared_ptr<const LogReader> log = reader_of(opened);
   if (!(fraction > 0 && fraction <= 1))
     return Error{"the energy fraction must be in (0, 1], got " + std::to_string(fraction)};
   if (points < 2) return Error{"the energy curve needs at least 2 points"};

@@ -12,6 +12,7 @@
 
 #include "analysis/crater.hpp"
 #include "engine/engine.hpp"
+#include "replay/log_impl.hpp"
 #include "replay/replay.hpp"
 #include "ede/number_text.hpp"
 #include "core/scalar_dispatch.hpp"
@@ -44,7 +45,8 @@ const char* to_string(CraterTimeSource s) {
 }
 
 template <class T>
-static Result<CraterMeasurement> measure_crater_in(const std::shared_ptr<const LogReader>& log, const CraterRequest& req) {
+static Result<CraterMeasurement> measure_crater_in(const Log& opened, const CraterRequest& req) {
+  const std::shared_ptr<const LogReader>& log = reader_of(opened);
   CraterMeasurement m;
   auto bed = select_bed(log->header(), req.bed_species);
   if (!bed) return Error{log->path() + ": " + bed.error().message};
@@ -54,7 +56,7 @@ static Result<CraterMeasurement> measure_crater_in(const std::shared_ptr<const L
     return Error{log->path() + ": the run is under gravity, where the kinetic energy changes between collisions "
                  "and its fraction does not mark the end of the impact; measure at a time with --at T (or --at end)"};
   if (m.has_energy) {
-    auto energy = energy_fraction_curve(log, req.energy_fraction, req.curve_points);
+    auto energy = energy_fraction_curve(opened, req.energy_fraction, req.curve_points);
     if (!energy) return energy.error();
     m.energy = std::move(energy).value();
   }
@@ -100,8 +102,8 @@ static Result<CraterMeasurement> measure_crater_in(const std::shared_ptr<const L
   return m;
 }
 
-Result<CraterMeasurement> measure_crater(std::shared_ptr<const LogReader> log, const CraterRequest& request) {
-  return with_scalar(log->header().scalar, [&]<class T>() { return measure_crater_in<T>(log, request); });
+Result<CraterMeasurement> measure_crater(const Log& log, const CraterRequest& request) {
+  return with_scalar(log.info().scalar, [&]<class T>() { return measure_crater_in<T>(log, request); });
 }
 
 }  // namespace ede

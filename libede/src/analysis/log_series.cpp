@@ -1,14 +1,15 @@
-// Log series and snapshots; see log_series.hpp. Each entry point dispatches once on the log's scalar type;
+// Log series and snapshots (ede/analysis.hpp): log_overview, log_series, for_each_snapshot. Each entry point dispatches once on the log's scalar type;
 // the walk itself runs in T, and the per-disk energies are computed exactly as kinetic_energy() computes
 // them (long double products of the T velocities), so a running sum and a fresh sum over the replayed
 // state agree to the rounding of the sums alone.
-#include "analysis/log_series.hpp"
+#include "ede/analysis.hpp"
 
 #include <cmath>
 #include <type_traits>
 
 #include "ede/number_text.hpp"
 #include "log/log_stats.hpp"
+#include "replay/log_impl.hpp"
 #include "replay/replay.hpp"
 
 namespace ede {
@@ -204,7 +205,8 @@ Status snapshots_in(const std::shared_ptr<const LogReader>& log, const std::vect
 
 }  // namespace
 
-Result<LogOverview> log_overview(const std::shared_ptr<const LogReader>& log) {
+Result<LogOverview> log_overview(const Log& opened) {
+  const std::shared_ptr<const LogReader> log = reader_of(opened);
   auto counts = count_logged_kinds(*log);
   if (!counts) return counts.error();
   return with_log_scalar(*log, [&]<class T>() -> Result<LogOverview> {
@@ -256,12 +258,14 @@ double LogSeries::species_mean_energy(std::size_t s, std::size_t k) const {
   return species_count[s] ? species_energy[s][k] / double(species_count[s]) : 0.0;
 }
 
-Result<LogSeries> log_series(const std::shared_ptr<const LogReader>& log, const std::vector<double>& times) {
+Result<LogSeries> log_series(const Log& opened, const std::vector<double>& times) {
+  const std::shared_ptr<const LogReader> log = reader_of(opened);
   return with_log_scalar(*log, [&]<class T>() { return series_in<T>(log, times); });
 }
 
-Status for_each_snapshot(const std::shared_ptr<const LogReader>& log, const std::vector<double>& times,
+Status for_each_snapshot(const Log& opened, const std::vector<double>& times,
                          const std::function<void(const GasSnapshot&)>& f) {
+  const std::shared_ptr<const LogReader> log = reader_of(opened);
   return with_log_scalar(*log, [&]<class T>() { return snapshots_in<T>(log, times, f); });
 }
 

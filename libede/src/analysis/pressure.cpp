@@ -4,7 +4,7 @@
 // bins, the mean +- standard error of the blocks, and the blocking analysis of the bins.
 // Rejected: one error method per observable (e.g. Poisson counting for the wall impulses): the block
 // error makes no assumption about the statistics of the events, and the checks say when it fails.
-#include "analysis/pressure.hpp"
+#include "ede/pressure.hpp"
 
 #include <cmath>
 #include <limits>
@@ -12,6 +12,7 @@
 #include "log/log_stats.hpp"
 #include "ede/number_text.hpp"
 #include "analysis/pressure_pass.hpp"
+#include "replay/log_impl.hpp"
 
 namespace ede {
 
@@ -167,7 +168,8 @@ double PressureReport::ideal() const { return double(disks) * kT.stats.mean / ar
 double PressureReport::henderson() const { return henderson_z(packing_fraction) * ideal(); }
 double PressureReport::expected_area() const { return has_walls() ? virial_area : area; }
 
-Result<PressureReport> measure_pressure(const std::shared_ptr<const LogReader>& log, const PressureOptions& o) {
+Result<PressureReport> measure_pressure(const Log& opened, const PressureOptions& o) {
+  const std::shared_ptr<const LogReader> log = reader_of(opened);
   if (log->header().gx != 0 || log->header().gy != 0)
     return Error{log->path() + ": the run is under gravity: its pressure varies with height (hydrostatics), "
                  "and the wall and virial estimates here assume a uniform gas"};

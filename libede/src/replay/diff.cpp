@@ -341,7 +341,7 @@ Result<DiffReport> diff_in(const Logs& logs, bool full, DiffReport report) {
 }  // namespace
 
 Result<DiffReport> Log::diff(const Log& other, bool full) const {
-  const Logs logs{impl_->reader, other.impl_->reader};
+  const Logs logs{impl_->reader, reader_of(other)};
   DiffReport report;
   report.text = "A: " + logs.a->path() + "\nB: " + logs.b->path() + "\n";
   if (const std::string why = incomparable(logs.a->header(), logs.b->header()); !why.empty())

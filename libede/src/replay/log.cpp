@@ -130,7 +130,7 @@ struct EventSpan {
 };
 
 template <class T>
-Result<EventSpan<T>> span_of(const Log::Impl& impl, Replay<T>& r, const EventRange& range) {
+Result<EventSpan<T>> span_of(const LogImpl& impl, Replay<T>& r, const EventRange& range) {
   const std::uint64_t total = impl.info.events;
   EventSpan<T> span;
   span.first = range.from_event.value_or(0);
@@ -160,7 +160,7 @@ Result<EventSpan<T>> span_of(const Log::Impl& impl, Replay<T>& r, const EventRan
 // The events of `range` in order, as the log's own ReplayedEvent<T>: the one walk behind for_each_event and
 // event_columns.
 template <class T>
-Status walk_events(const Log::Impl& impl, const EventRange& range,
+Status walk_events(const LogImpl& impl, const EventRange& range,
                    const std::function<bool(const ReplayedEvent<T>&)>& f) {
   auto replay = impl.replay_in<T>();
   if (!replay) return replay.error();
@@ -270,7 +270,7 @@ namespace {
 // The events of a span written through `sink`, replayed in pieces cut at keyframes on up to `threads`
 // threads. Returns the events written: a prefix of the span (to_time may end it early).
 template <class T>
-Result<std::uint64_t> write_events(const Log::Impl& impl, Replay<T>& cached, const EventSpan<T>& sp,
+Result<std::uint64_t> write_events(const LogImpl& impl, Replay<T>& cached, const EventSpan<T>& sp,
                                    const EventFieldSink& sink, unsigned threads) {
   if (sp.first >= sp.end) return std::uint64_t(0);
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
@@ -333,7 +333,7 @@ Status check_row_layout(const EventRowLayout& l, std::size_t real_bytes) {
 
 // The cached replay and the span of `range` in T, for the event walks.
 template <class T>
-Result<std::pair<Replay<T>*, EventSpan<T>>> prepare_walk(const Log::Impl& impl, const EventRange& range) {
+Result<std::pair<Replay<T>*, EventSpan<T>>> prepare_walk(const LogImpl& impl, const EventRange& range) {
   auto replay = impl.replay_in<T>();
   if (!replay) return replay.error();
   auto span = span_of(impl, *replay.value(), range);

@@ -1,6 +1,8 @@
-// Log::Impl: what a public Log holds, for the library's own code (analysis functions reach the reader
-// through it). A Log is a LogReader plus one cached Replay per scalar type, so successive seeks of the
-// same Log continue from where the last one stopped instead of starting at a keyframe again.
+// Log::Impl: what a public Log holds, and LogAccess, the library's own way into it (the analyses, verify
+// and diff reach the log's reader through reader_of). A Log is a LogReader plus one cached Replay per
+// scalar type, so successive seeks of the same Log continue from where the last one stopped instead of
+// starting at a keyframe again. Rejected: a public Log::impl() (any program could reach the internal
+// reader through it); the public header names only the friend, LogAccess, which only this header defines.
 #pragma once
 
 #include <memory>
@@ -31,6 +33,12 @@ struct Log::Impl {
   }
 };
 
-inline const std::shared_ptr<LogReader>& reader_of(const Log& log) { return log.impl().reader; }
+struct LogAccess {
+  using Impl = Log::Impl;
+  static const Impl& impl(const Log& log) { return *log.impl_; }
+};
+using LogImpl = LogAccess::Impl;  // for the library's helpers over a Log's insides (replay/log.cpp)
+
+inline const std::shared_ptr<LogReader>& reader_of(const Log& log) { return LogAccess::impl(log).reader; }
 
 }  // namespace ede
