@@ -24,7 +24,7 @@
 #include <optional>
 #include <vector>
 
-#include "ede/analysis.hpp"
+#include "ede/distributions.hpp"
 #include "ede/error.hpp"
 #include "ede/log.hpp"
 

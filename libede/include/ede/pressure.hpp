@@ -53,7 +53,7 @@
 #include <string>
 #include <vector>
 
-#include "ede/analysis.hpp"
+#include "ede/block_average.hpp"
 #include "ede/error.hpp"
 #include "ede/log.hpp"
 #include "ede/scene.hpp"
