@@ -41,11 +41,11 @@ Error refused(const std::string& why) { return Error{std::string(kSource) + ": "
 
 Status check_options(const TimeSteppedOptions& o) {
   if (!std::isfinite(o.dt) || o.dt <= 0)
-    return refused("the time step dt = " + short_number(o.dt) + " must be finite and > 0");
+    return refused("the time step dt = " + brief(o.dt) + " must be finite and > 0");
   if (!(o.restitution >= 0 && o.restitution <= 1))
-    return refused("the pair restitution " + short_number(o.restitution) + " must lie in [0, 1]");
+    return refused("the pair restitution " + brief(o.restitution) + " must lie in [0, 1]");
   if (!(o.wall_restitution >= 0 && o.wall_restitution <= 1))
-    return refused("the wall restitution " + short_number(o.wall_restitution) + " must lie in [0, 1]");
+    return refused("the wall restitution " + brief(o.wall_restitution) + " must lie in [0, 1]");
   return Ok{};
 }
 
@@ -53,7 +53,7 @@ Status check_periodic_box(const InitialState& s, double max_radius) {
   const double least = 3 * 2 * max_radius * (1 + 1e-6);
   if (s.lx >= least && s.ly >= least) return Ok{};
   return refused("a periodic box must be at least three largest diameters wide on each side (largest diameter " +
-                 short_number(2 * max_radius) + ", box " + short_number(s.lx) + " x " + short_number(s.ly) +
+                 brief(2 * max_radius) + ", box " + brief(s.lx) + " x " + brief(s.ly) +
                  "); enlarge the box or use walls");
 }
 

@@ -45,7 +45,7 @@ TEST_CASE("number text is printf's %.*g: special values", "[core][number_text]")
   for (const double v : {0.0, -0.0, 1.0, 0.1, -2.5, 1000.0, 1e16, 1e17, 123456789012345678.0, 5e-324,
                          2.2250738585072014e-308, 1.7976931348623157e308, 1e-7, inf, -inf}) {
     CHECK(exact_number(v) == printf_text(v, 17));
-    CHECK(short_number(v) == printf_text(v, 6));
+    CHECK(brief(v) == printf_text(v, 6));
     CHECK(exact_number(float(v)) == printf_text(double(float(v)), 9));
     CHECK(exact_number((long double)v) == printf_text((long double)v, 21));
   }
@@ -66,7 +66,7 @@ TEST_CASE("number text is printf's %.*g: random bit patterns of float, double an
     // x87 long double: 64-bit mantissa with its explicit integer bit set (the other encodings are not
     // values a computation produces), then sign and exponent.
     const long double ld = from_bits<long double>(a | (std::uint64_t(1) << 63), b & 0xFFFF);
-    if (exact_number(d) != printf_text(d, 17) || short_number(d) != printf_text(d, 6) ||
+    if (exact_number(d) != printf_text(d, 17) || brief(d) != printf_text(d, 6) ||
         exact_number(f) != printf_text(double(f), 9) || exact_number(ld) != printf_text(ld, 21)) {
       FAIL_CHECK("differs from printf for bits " << a << " " << b << ": " << exact_number(d) << " "
                                                  << exact_number(f) << " " << exact_number(ld));

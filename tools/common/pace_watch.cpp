@@ -3,7 +3,7 @@
 
 #include <cstdio>
 
-#include "number_text.hpp"
+#include "ede/number_text.hpp"
 
 namespace ede::tools {
 

@@ -28,9 +28,9 @@ Status write_profile_csv(const std::string& path, const CraterMeasurement& m) {
   std::string s = "x_left,x_right,x,h_before,h_after,drop,in_crater,disks_before,disks_after\n";
   for (std::size_t k = 0; k < r.before.height.size(); ++k) {
     const bool in = r.metrics.has_crater && k >= r.metrics.first_bin && k <= r.metrics.last_bin;
-    s += exact(double(k) * w) + "," + exact(double(k + 1) * w) + "," + exact(r.before.centre(k)) + "," +
-         exact(r.before.height[k]) + "," + exact(r.after.height[k]) + "," +
-         exact(r.before.height[k] - r.after.height[k]) + "," + (in ? "1" : "0") + "," +
+    s += exact_double(double(k) * w) + "," + exact_double(double(k + 1) * w) + "," + exact_double(r.before.centre(k)) + "," +
+         exact_double(r.before.height[k]) + "," + exact_double(r.after.height[k]) + "," +
+         exact_double(r.before.height[k] - r.after.height[k]) + "," + (in ? "1" : "0") + "," +
          std::to_string(r.before.disks[k]) + "," + std::to_string(r.after.disks[k]) + "\n";
   }
   return write_text_file(path, s);
@@ -38,7 +38,7 @@ Status write_profile_csv(const std::string& path, const CraterMeasurement& m) {
 
 Status write_energy_csv(const std::string& path, const CraterMeasurement& m) {
   std::string s = "t,energy_fraction\n";
-  for (std::size_t k = 0; k < m.energy.t.size(); ++k) s += exact(m.energy.t[k]) + "," + exact(m.energy.f[k]) + "\n";
+  for (std::size_t k = 0; k < m.energy.t.size(); ++k) s += exact_double(m.energy.t[k]) + "," + exact_double(m.energy.f[k]) + "\n";
   return write_text_file(path, s);
 }
 

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "ede/ede.hpp"
-#include "number_text.hpp"
+#include "ede/number_text.hpp"
 #include "report_error.hpp"
 
 namespace ede::crater_tool {
@@ -37,8 +37,6 @@ inline int usage_error(const std::string& message) {
   return 2;
 }
 
-using tools::brief;  // short text of a double for reports (6 significant digits)
-using tools::exact;  // exact text of a double (17 significant digits)
 
 // The options of a measurement, as typed; shared by `measure` and `scan` (measure_options.cpp).
 struct MeasureOptions {

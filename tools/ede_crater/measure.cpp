@@ -41,13 +41,13 @@ void print_report(const Options& opt, const MeasuredLog& ml) {
   std::printf("log               %s: %llu disks, %s; %s\n", opt.log.c_str(), static_cast<unsigned long long>(ml.disks),
               ml.scalar.c_str(), ml.run_status.c_str());
   std::printf("bed               %zu disks: %s\n", m.bed.disks, m.bed.reason.c_str());
-  std::printf("measured at       t = %s, after %llu events: %s\n", exact(m.time).c_str(),
+  std::printf("measured at       t = %s, after %llu events: %s\n", exact_double(m.time).c_str(),
               static_cast<unsigned long long>(m.events), m.when.c_str());
-  if (m.before_time > 0) std::printf("compared with     the bed at t = %s (--before)\n", exact(m.before_time).c_str());
+  if (m.before_time > 0) std::printf("compared with     the bed at t = %s (--before)\n", exact_double(m.before_time).c_str());
   if (m.has_energy)
     std::printf("energy            E/E0 = %s there (E0 = %s); the fraction %s is %s\n", brief(m.energy_fraction).c_str(),
                 brief(m.energy.initial_energy).c_str(), brief(m.energy.fraction).c_str(),
-                m.energy.reached ? ("reached at t = " + exact(m.energy.time)).c_str() : "never reached in this log");
+                m.energy.reached ? ("reached at t = " + exact_double(m.energy.time)).c_str() : "never reached in this log");
   else
     std::printf("energy            no fraction under gravity (the kinetic energy changes between collisions)\n");
   std::printf("lengths           r_bed = %s (mean bed radius); %zu bins of width %s; link gap %s\n",
@@ -108,8 +108,8 @@ int run_measure(const Options& opt) {
   if (!opt.plot.empty()) {
     const CraterMeasurement& m = ml.crater;
     const Status s = tools::run_plot_script_to(
-        "plot_crater.py", {"measure", profile, energy, opt.plot, "--time", exact(m.time), "--fraction",
-                           exact(m.energy.fraction), "--drop-threshold", exact(m.report.lengths.drop_threshold),
+        "plot_crater.py", {"measure", profile, energy, opt.plot, "--time", exact_double(m.time), "--fraction",
+                           exact_double(m.energy.fraction), "--drop-threshold", exact_double(m.report.lengths.drop_threshold),
                            "--title", std::filesystem::path(opt.log).filename().string()},
         opt.plot);
     cleanup();

@@ -27,7 +27,7 @@ std::vector<std::string> scan_columns() {
 
 // Every measuring option, so that rows measured otherwise are measured again, not reused.
 std::string measured_with(const MeasureOptions& o) {
-  return "ede-crater scan: at=" + o.at + " before=" + o.before + " energy_fraction=" + exact(o.energy_fraction) +
+  return "ede-crater scan: at=" + o.at + " before=" + o.before + " energy_fraction=" + exact_double(o.energy_fraction) +
          " species=" + o.species + " threshold=" + o.threshold + " bin_width=" + o.bin_width +
          " drop_threshold=" + o.drop_threshold + " link_gap=" + o.link_gap +
          " keep_detached=" + (o.keep_detached ? "1" : "0") + " points=" + std::to_string(o.points);

@@ -12,7 +12,6 @@ namespace ede::crater_tool {
 
 namespace {
 
-using tools::exact_cell;
 
 std::string axis_cell(const std::string& value) { return exact_cell(scan_axis_position(value)); }
 
@@ -48,8 +47,8 @@ Status write_scan_csv(const ScanResults& r, const std::string& per_run, const st
   for (const ScanRow& row : r.rows) {
     s += csv_field(r.values[row.value]) + "," + axis_cell(r.values[row.value]) + "," + std::to_string(row.seed) + "," +
          csv_field(row.log) + "," + csv_field(row.run_status) + "," + (run_suspect(row.run_status) ? "1" : "0") + "," +
-         exact(row.crater.time) + "," + to_string(row.crater.source) + "," + exact(row.energy_fraction);
-    for (const double v : row.crater.metrics) s += "," + exact(v);
+         exact_double(row.crater.time) + "," + to_string(row.crater.source) + "," + exact_double(row.energy_fraction);
+    for (const double v : row.crater.metrics) s += "," + exact_double(v);
     s += "\n";
   }
   if (Status w = write_text_file(per_run, s); !w) return w;
@@ -61,7 +60,7 @@ Status write_scan_csv(const ScanResults& r, const std::string& per_run, const st
   for (std::size_t v = 0; v < r.values.size(); ++v) {
     a += csv_field(r.values[v]) + "," + axis_cell(r.values[v]) + "," + std::to_string(groups[v].runs) + "," +
          std::to_string(suspect_runs(r, v));
-    for (const MeanAndError& m : groups[v].metrics) a += "," + exact(m.mean) + "," + exact_cell(m.error);
+    for (const MeanAndError& m : groups[v].metrics) a += "," + exact_double(m.mean) + "," + exact_cell(m.error);
     a += "\n";
   }
   return write_text_file(aggregate, a);

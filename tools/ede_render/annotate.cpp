@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "draw.hpp"
-#include "number_text.hpp"
+#include "ede/number_text.hpp"
 
 namespace ede::render {
 
@@ -92,7 +92,7 @@ void draw_bar(cairo_t* cr, const ColourBar& bar, const Style& st, double x, doub
   cairo_set_line_width(cr, 1);
   cairo_stroke(cr);
   for (int k = 0; k <= 2; ++k) {
-    const std::string t = k == 0 ? "0" : tools::brief(bar.max * k / 2, 3) + (k == 2 && bar.open_top ? "+" : "");
+    const std::string t = k == 0 ? "0" : brief(bar.max * k / 2, 3) + (k == 2 && bar.open_top ? "+" : "");
     const double tx = x + w * k / 2, tw = text_width(cr, t);
     cairo_new_path(cr);
     cairo_move_to(cr, tx, gy + gh);
@@ -107,7 +107,7 @@ void draw_bar(cairo_t* cr, const ColourBar& bar, const Style& st, double x, doub
 void draw_label(cairo_t* cr, const Frame& f, ImageSize size) {
   const Style st(size);
   set_font(cr, st);
-  const std::string text = "t = " + tools::brief(double(f.time), 4) + "    N = " + std::to_string(f.size());
+  const std::string text = "t = " + brief(double(f.time), 4) + "    N = " + std::to_string(f.size());
   const double w = text_width(cr, text) + 2 * st.pad, h = st.row + st.pad;
   panel(cr, st.pad, st.pad, w, h, st.pad / 2);
   text_at(cr, 2 * st.pad, st.pad + h / 2, text);

@@ -5,7 +5,7 @@
 #include <array>
 #include <cmath>
 
-#include "number_text.hpp"
+#include "ede/number_text.hpp"
 
 namespace ede::render {
 
@@ -72,7 +72,7 @@ void by_speed(const Frame& f, Colouring& c) {
   const std::string names[] = {"slow  v < 0.5 " + bar, "medium", "fast  v > 1.5 " + bar};
   for (std::size_t k = 0; k < 3; ++k)
     c.legend.push_back({speed_colour(SpeedClass(k)), names[k] + "  (" + std::to_string(n[k]) + ")"});
-  c.legend.push_back({Rgb{}, bar + " = " + tools::brief(reference, 3) +
+  c.legend.push_back({Rgb{}, bar + " = " + brief(reference, 3) +
                                  (from_start ? " (initial mean speed)" : " (mean speed now: all at rest at t = 0)"),
                       LegendEntry::Swatch::None});
 }

@@ -19,7 +19,7 @@
 
 #include "ede/collision_stats.hpp"
 
-#include "number_text.hpp"
+#include "ede/number_text.hpp"
 #include "output_file.hpp"
 #include "replay_tool.hpp"
 
@@ -41,7 +41,7 @@ bool has_vi(EventKind k) { return k == EventKind::Pair || k == EventKind::Wall |
 // One row; the columns an event kind does not have are left empty.
 // The collision's statistics (empty for wraps and actions; pair-only fields empty for walls).
 std::string statistics(const CollisionRecord& c) {
-  const auto d = [](double v) { return tools::exact(v); };
+  const auto d = [](double v) { return exact_double(v); };
   if (!c.pair && !c.wall) return ",,,,,,";
   return d(c.impulse_x) + "," + d(c.impulse_y) + "," + d(c.impulse) + "," + (c.pair ? d(c.impact_parameter) : "") + "," +
          d(c.relative_speed) + "," + d(c.normal_speed) + "," + (c.pair ? d(c.tangential_speed) : "");

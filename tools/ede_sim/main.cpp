@@ -22,7 +22,7 @@
 #include "ede/ede.hpp"
 #include "file_checks.hpp"
 #include "interrupt.hpp"
-#include "number_text.hpp"
+#include "ede/number_text.hpp"
 #include "pace_watch.hpp"
 #include "progress.hpp"
 #include "report_error.hpp"
@@ -156,7 +156,7 @@ int run(int argc, char** argv) {
     } catch (const std::bad_alloc&) {
       progress.finish();
       return fail(ede::tools::out_of_memory_message("running " + sim.scene().source_name + " at t = " +
-                                                    ede::tools::brief(double(sim.time()))));
+                                                    ede::brief(double(sim.time()))));
     }
   }
   progress.finish();

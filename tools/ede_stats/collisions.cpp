@@ -32,10 +32,10 @@ std::string csv_of(const CollisionSeries& c) {
   std::string text = kCollisionsCsvHeader;
   for (std::size_t k = 0; k < s.time.size(); ++k) {
     const SpeedClasses& sc = c.classes[k];
-    text += exact(s.time[k]) + "," + std::to_string(s.pair_collisions[k]) + "," + std::to_string(s.wall_collisions[k]) +
-            "," + exact(s.collisions_per_particle(k)) + "," + exact_cell(c.rate[k]) + "," +
-            exact_cell(c.mean_free_time[k]) + "," + exact(sc.slow_percent) + "," + exact(sc.medium_percent) + "," +
-            exact(sc.fast_percent) + "," + exact_cell(c.enskog_rate[k]) + "\n";
+    text += exact_double(s.time[k]) + "," + std::to_string(s.pair_collisions[k]) + "," + std::to_string(s.wall_collisions[k]) +
+            "," + exact_double(s.collisions_per_particle(k)) + "," + exact_cell(c.rate[k]) + "," +
+            exact_cell(c.mean_free_time[k]) + "," + exact_double(sc.slow_percent) + "," + exact_double(sc.medium_percent) + "," +
+            exact_double(sc.fast_percent) + "," + exact_cell(c.enskog_rate[k]) + "\n";
   }
   return text;
 }
@@ -73,8 +73,8 @@ void report(const std::string& path, const LogOverview& o, const CollisionSeries
               brief(0.5 * v).c_str(), brief(1.5 * v).c_str());
   for (const std::size_t k : {std::size_t(0), last})
     std::printf("  t = %-18s slow %5s%%  medium %5s%%  fast %5s%%\n", brief(s.time[k]).c_str(),
-                tools::fixed(c.classes[k].slow_percent, 1).c_str(), tools::fixed(c.classes[k].medium_percent, 1).c_str(),
-                tools::fixed(c.classes[k].fast_percent, 1).c_str());
+                fixed_text(c.classes[k].slow_percent, 1).c_str(), fixed_text(c.classes[k].medium_percent, 1).c_str(),
+                fixed_text(c.classes[k].fast_percent, 1).c_str());
 }
 
 int run_collisions(const CollisionOptions& opt) {

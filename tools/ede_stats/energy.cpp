@@ -68,14 +68,14 @@ std::string csv_of(const std::vector<Run>& runs) {
   for (const Run& r : runs) {
     const LogSeries& s = r.curve.series;
     for (std::size_t k = 0; k < s.time.size(); ++k) {
-      text += r.label + "," + exact(r.curve.restitution) + "," + exact(s.time[k]) + "," + exact(s.kinetic_energy[k]) +
-              "," + exact_cell(r.curve.ratio(k)) + "," + exact(s.mean_kinetic_energy(k)) + "," +
+      text += r.label + "," + exact_double(r.curve.restitution) + "," + exact_double(s.time[k]) + "," + exact_double(s.kinetic_energy[k]) +
+              "," + exact_cell(r.curve.ratio(k)) + "," + exact_double(s.mean_kinetic_energy(k)) + "," +
               exact_cell(r.curve.haff_ratio(k));
       for (const std::string& n : names) {
         const auto it = std::find(s.species_names.begin(), s.species_names.end(), n);
         text += "," + (it == s.species_names.end()
                            ? ""
-                           : exact(s.species_mean_energy(std::size_t(it - s.species_names.begin()), k)));
+                           : exact_double(s.species_mean_energy(std::size_t(it - s.species_names.begin()), k)));
       }
       text += "\n";
     }

@@ -61,15 +61,15 @@ std::string hist_csv(const DistributionReport& r) {
   const Histogram& h = r.histogram;
   std::string text = "bin_left,bin_right,density,count,mb_density,initial_density,initial_count\n";
   for (std::size_t k = 0; k < h.bins(); ++k)
-    text += exact(h.edges[k]) + "," + exact(h.edges[k + 1]) + "," + exact(r.density[k]) + "," +
-            std::to_string(h.count[k]) + "," + exact(r.law_density[k]) + "," + exact(r.initial_density[k]) + "," +
+    text += exact_double(h.edges[k]) + "," + exact_double(h.edges[k + 1]) + "," + exact_double(r.density[k]) + "," +
+            std::to_string(h.count[k]) + "," + exact_double(r.law_density[k]) + "," + exact_double(r.initial_density[k]) + "," +
             std::to_string(r.initial.count[k]) + "\n";
   return text;
 }
 
 std::string curve_csv(const DistributionReport& r) {
   std::string text = "x,mb_density\n";
-  for (std::size_t k = 0; k < r.curve_x.size(); ++k) text += exact(r.curve_x[k]) + "," + exact(r.curve_density[k]) + "\n";
+  for (std::size_t k = 0; k < r.curve_x.size(); ++k) text += exact_double(r.curve_x[k]) + "," + exact_double(r.curve_density[k]) + "\n";
   return text;
 }
 

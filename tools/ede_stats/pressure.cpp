@@ -60,7 +60,7 @@ std::string z_text(const PressureSeries& z) { return "Z = P A / (N kT) = " + pm(
 
 std::string check_text(const PressureSeries& s) {
   const BlockingAnalysis& b = s.blocking;
-  const std::string lag1 = std::isnan(s.stats.lag1) ? "n/a" : tools::fixed(s.stats.lag1, 2);
+  const std::string lag1 = std::isnan(s.stats.lag1) ? "n/a" : fixed_text(s.stats.lag1, 2);
   std::string t = "lag-1 correlation " + lag1 + ", blocking error " + num(b.error, 2);
   switch (b.trend) {
     case BlockingTrend::Plateau: t += " (plateau at " + std::to_string(b.levels[b.plateau].blocks) + " blocks)"; break;

@@ -23,8 +23,8 @@ struct Psi6Options {
 Status write_disks(const std::string& path, const State& s, const std::vector<std::complex<double>>& p) {
   std::string text = "id,x,y,psi6_re,psi6_im,psi6_abs\n";
   for (std::size_t i = 0; i < p.size(); ++i)
-    text += std::to_string(i) + "," + exact(s.x[i]) + "," + exact(s.y[i]) + "," + exact(p[i].real()) + "," +
-            exact(p[i].imag()) + "," + exact(std::abs(p[i])) + "\n";
+    text += std::to_string(i) + "," + exact_double(s.x[i]) + "," + exact_double(s.y[i]) + "," + exact_double(p[i].real()) + "," +
+            exact_double(p[i].imag()) + "," + exact_double(std::abs(p[i])) + "\n";
   tools::Output out(path);
   if (!out.file()) return Error{out.error()};
   out.write(text);

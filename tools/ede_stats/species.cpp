@@ -29,9 +29,9 @@ constexpr const char* kSpeciesCsvHeader =
 std::string csv_rows(const SpeciesTable& table) {
   std::string text;
   for (const SpeciesStats& s : table.rows)
-    text += exact(table.time) + "," + s.name + "," + std::to_string(s.n) + "," + exact(s.mass_min) + "," +
-            exact(s.mass_max) + "," + exact(s.mean_speed) + "," + exact(s.mean_kinetic_energy) + "," + exact(s.kT) +
-            "," + exact(s.mean_speed_error) + "," + exact(s.mean_kinetic_energy_error) + "\n";
+    text += exact_double(table.time) + "," + s.name + "," + std::to_string(s.n) + "," + exact_double(s.mass_min) + "," +
+            exact_double(s.mass_max) + "," + exact_double(s.mean_speed) + "," + exact_double(s.mean_kinetic_energy) + "," + exact_double(s.kT) +
+            "," + exact_double(s.mean_speed_error) + "," + exact_double(s.mean_kinetic_energy_error) + "\n";
   return text;
 }
 
@@ -76,7 +76,7 @@ int run_time_average(const SpeciesOptions& opt, const OpenedLog& o) {
   for (const SpeciesTimeAverage& a : rows.value()) {
     std::printf("  %-14s %10llu %16s %13s\n", a.name.c_str(), static_cast<unsigned long long>(a.n),
                 brief(a.mean_kinetic_energy).c_str(), brief(a.error).c_str());
-    csv += a.name + "," + std::to_string(a.n) + "," + exact(a.mean_kinetic_energy) + "," + exact(a.error) + "\n";
+    csv += a.name + "," + std::to_string(a.n) + "," + exact_double(a.mean_kinetic_energy) + "," + exact_double(a.error) + "\n";
   }
   return write_csv_and_plot({.output = opt.output, .plot = "", .csv = csv, .script = "", .args = {}, .figure_label = ""});
 }

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "ede/ede.hpp"
-#include "number_text.hpp"
+#include "ede/number_text.hpp"
 #include "open_log.hpp"
 #include "report_error.hpp"
 #include "time_option.hpp"
@@ -38,9 +38,6 @@ inline int usage_error(const std::string& message, const std::string& command = 
 
 inline void warn(const std::string& message) { std::fprintf(stderr, "ede-stats: warning: %s\n", message.c_str()); }
 
-using tools::brief;       // short, for reports
-using tools::exact;       // exact, for CSV
-using tools::exact_cell;  // exact, NaN as an empty field
 
 // A log (with the warning for an incomplete one) and its overview (disks, end time, event counts).
 struct OpenedLog {

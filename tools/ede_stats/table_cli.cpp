@@ -10,7 +10,7 @@ namespace ede::stats_tool {
 
 namespace {
 
-std::string json_number(double v) { return std::isfinite(v) ? exact(v) : "null"; }
+std::string json_number(double v) { return std::isfinite(v) ? exact_double(v) : "null"; }
 
 std::string json_string(const std::string& s) {
   std::string out = "\"";

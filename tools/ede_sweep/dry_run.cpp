@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <unistd.h>
 
-#include "number_text.hpp"
+#include "ede/number_text.hpp"
 
 namespace ede::sweep {
 
@@ -50,13 +50,13 @@ Pilot pilot(const Sweep& s, const PlannedRun& r, const std::string& dir, double 
   (void)sim.value().close();
   std::error_code ignored;
   const double bytes = double(std::filesystem::file_size(path, ignored));
-  if (f <= 0) return p.error = "no progress to extrapolate from in " + tools::brief(elapsed, 2) + " s", p;
+  if (f <= 0) return p.error = "no progress to extrapolate from in " + brief(elapsed, 2) + " s", p;
   p.seconds = elapsed / f;
   p.bytes = bytes / f;
   return p;
 }
 
-std::string mib(double bytes) { return tools::brief(bytes / 1048576.0, 3) + " MiB"; }
+std::string mib(double bytes) { return brief(bytes / 1048576.0, 3) + " MiB"; }
 
 }  // namespace
 
@@ -77,7 +77,7 @@ std::string dry_run_report(const Sweep& s, std::size_t jobs, double pilot_second
       t += "pilot " + p.name + ": " + p.error + "\n";
       continue;
     }
-    t += "pilot " + p.name + ": " + (p.finished ? "finished" : "extrapolated") + ", ~" + tools::brief(p.seconds, 2) +
+    t += "pilot " + p.name + ": " + (p.finished ? "finished" : "extrapolated") + ", ~" + brief(p.seconds, 2) +
          " s and " + mib(p.bytes) + " of log per run" + (p.bounded ? " (at most: it stops on energy)" : "") + "\n";
     seconds += p.seconds, bytes += p.bytes, bounded = bounded || p.bounded, ++measured;
   }
@@ -85,7 +85,7 @@ std::string dry_run_report(const Sweep& s, std::size_t jobs, double pilot_second
   if (measured == 0) return t + "estimate: none (no pilot ran)\n";
   const double n = double(s.runs.size());
   const double wall = seconds / double(measured) * n / double(std::max<std::size_t>(1, std::min(jobs, s.runs.size())));
-  t += "estimate: " + std::string(bounded ? "at most " : "") + tools::brief(wall / 60, 2) + " min on " + std::to_string(jobs) +
+  t += "estimate: " + std::string(bounded ? "at most " : "") + brief(wall / 60, 2) + " min on " + std::to_string(jobs) +
        " workers, " + mib(bytes / double(measured) * n) + " of logs (the mean of the pilots, times " +
        std::to_string(s.runs.size()) + " runs)\n";
   return t;

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <map>
 
-#include "number_text.hpp"
+#include "ede/number_text.hpp"
 
 namespace ede::sweep {
 
@@ -42,9 +42,9 @@ std::string runs_csv(const Sweep& s, const std::vector<RunRow>& rows, bool timin
     t += std::to_string(k) + "," + r.name;
     for (const std::string& c : r.columns) t += "," + cell(c);
     t += "," + (r.seed ? std::to_string(*r.seed) : std::string());
-    for (double v : row.values) t += "," + tools::exact_cell(v);
+    for (double v : row.values) t += "," + exact_cell(v);
     t += "," + cell(row.status) + "," + cell(row.error) + "," + cell(row.log) + "," + row.digest;
-    t += timing ? "," + tools::brief(row.wall_seconds, 4) + "\n" : "\n";
+    t += timing ? "," + brief(row.wall_seconds, 4) + "\n" : "\n";
   }
   return t;
 }
@@ -73,7 +73,7 @@ std::string points_csv(const Sweep& s, const std::vector<RunRow>& rows) {
     t += "," + std::to_string(end - k) + "," + std::to_string(ok);
     for (const auto& values : per_quantity) {
       const MeanAndError m = mean_and_error(values);
-      t += "," + (m.n ? tools::exact_cell(m.mean) : std::string()) + "," + (m.n > 1 ? tools::exact_cell(m.error) : std::string());
+      t += "," + (m.n ? exact_cell(m.mean) : std::string()) + "," + (m.n > 1 ? exact_cell(m.error) : std::string());
     }
     t += "\n";
     k = end;

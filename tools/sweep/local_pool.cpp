@@ -7,14 +7,14 @@
 #include <mutex>
 #include <thread>
 
-#include "number_text.hpp"
+#include "ede/number_text.hpp"
 
 namespace ede::sweep {
 
 void report_run(const Sweep& s, const RunRow& row, std::size_t done) {
   if (!s.progress) return;
   std::fprintf(stderr, "%s: %zu/%zu %s %s%s%s\n", s.tool.c_str(), done, s.runs.size(), row.name.c_str(), row.status.c_str(),
-               row.reused ? " (reused)" : (" (" + tools::brief(row.wall_seconds, 3) + " s)").c_str(),
+               row.reused ? " (reused)" : (" (" + brief(row.wall_seconds, 3) + " s)").c_str(),
                row.error.empty() ? "" : (": " + row.error).c_str());
 }
 

@@ -1,11 +1,13 @@
-// Numbers as text inside libede, all through one path: std::to_chars with chars_format::general and an
-// explicit precision, which the standard specifies to give what printf's %.*g gives in the C locale.
+// Numbers as text, for the library and the tools alike, all through one path: std::to_chars with
+// chars_format::general (or fixed) and an explicit precision, which the standard specifies to give what
+// printf's %.*g (%.*f) gives in the C locale.
 //
 // Two uses: exact text, with the significant digits that read back to the identical value (float 9,
 // double 17, long double 21: the state CSV, times in messages), and short text for people (6 digits, to
 // recognise a value a user typed or to compare two). Every CSV ede wrote before with printf compares
 // byte for byte with one written now (checked on every example scene and 3 million random bit patterns
-// of each type, with GCC 12 and Clang 14 on libstdc++ 12). Chosen over libfmt: the same result without a
+// of each type, with GCC 12 and Clang 14 on libstdc++ 12); the tools' reports and CSVs read as they did
+// with their own copy of these functions, now gone. Chosen over libfmt: the same result without a
 // dependency, no locale and no format string; a double takes 84 ns instead of snprintf's 287 (long double
 // goes through libstdc++'s own printf path and costs about the same as before). Rejected: to_chars' shortest
 // form (shorter, but old and new CSVs would no longer compare equal), std::to_string (fixed six decimals
@@ -14,6 +16,7 @@
 #pragma once
 
 #include <charconv>
+#include <cmath>
 #include <cstddef>
 #include <string>
 #include <type_traits>
@@ -47,7 +50,18 @@ std::string exact_number(T v) {
   return general_text(v, kExactDigits<T>);
 }
 
-// 6 significant digits, for messages and reports.
-inline std::string short_number(double v) { return general_text(v, 6); }
+// `digits` significant digits, as %.<digits>g prints them: short text for messages and reports.
+inline std::string brief(double v, int digits = 6) { return general_text(v, digits); }
+
+// `decimals` digits after the point, as %.<decimals>f prints them (for numbers known to be small).
+inline std::string fixed_text(double v, int decimals) {
+  char b[400];
+  return std::string(b, std::to_chars(b, b + sizeof b, v, std::chars_format::fixed, decimals).ptr);
+}
+
+// A double exactly (17 significant digits: a long double or Time argument is a double first), and as a
+// CSV cell, where NaN (no value) is an empty field.
+inline std::string exact_double(double v) { return exact_number(v); }
+inline std::string exact_cell(double v) { return std::isnan(v) ? std::string() : exact_double(v); }
 
 }  // namespace ede

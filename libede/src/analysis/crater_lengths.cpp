@@ -20,7 +20,7 @@ constexpr double kMaxBins = 1e7;
 Status check_length(const char* what, double v, bool zero_allowed) {
   if (!std::isfinite(v) || v < 0 || (!zero_allowed && v == 0))
     return Error{std::string(what) + " must be a finite number " + (zero_allowed ? ">= 0" : "> 0") + ", got " +
-                 short_number(v)};
+                 brief(v)};
   return Ok{};
 }
 
@@ -52,7 +52,7 @@ Result<CraterLengths> resolve_crater_lengths(const DiskPositions& before, const 
   if (Status c = check_length("the link gap", l.link_gap, true); !c) return c.error();
   const double bins = std::round(box.lx / l.bin_width);
   if (bins > kMaxBins)
-    return Error{"a bin width of " + short_number(l.bin_width) +
+    return Error{"a bin width of " + brief(l.bin_width) +
                  " gives more than 10^7 bins across the box; use a wider one"};
   l.bins = bins < 1 ? 1 : std::size_t(bins);
   l.bin_width = box.lx / double(l.bins);

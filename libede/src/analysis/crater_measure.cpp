@@ -69,7 +69,7 @@ static Result<CraterMeasurement> measure_crater_in(const Log& opened, const Crat
   m.before_time = double(replay.time());
   const DiskPositions before = positions(replay.particles(), replay.time());
 
-  const std::string f = short_number(req.energy_fraction);
+  const std::string f = brief(req.energy_fraction);
   if (req.at) {
     if (Status s = replay.seek_time(T(*req.at)); !s) return s.error();
     m.source = CraterTimeSource::Requested;
@@ -86,12 +86,12 @@ static Result<CraterMeasurement> measure_crater_in(const Log& opened, const Crat
     m.source = CraterTimeSource::LogEnd;
     m.when = req.at_end ? "the log's end, as asked"
                         : "the log's end: the kinetic energy never fell to " + f + " of its initial value (" +
-                              short_number(m.energy.end_fraction) + " of it is left at the end)";
+                              brief(m.energy.end_fraction) + " of it is left at the end)";
   }
   m.time = double(replay.time());
   if (m.time < m.before_time)
-    return Error{log->path() + ": the crater is measured at t = " + short_number(m.time) +
-                 ", before the reference state (--before " + short_number(m.before_time) + "): measure later"};
+    return Error{log->path() + ": the crater is measured at t = " + brief(m.time) +
+                 ", before the reference state (--before " + brief(m.before_time) + "): measure later"};
   m.events = replay.events_applied();
   m.energy_fraction = m.has_energy ? kinetic_energy(replay.particles()) / m.energy.initial_energy
                                    : std::numeric_limits<double>::quiet_NaN();

@@ -28,7 +28,7 @@ Result<std::vector<double>> grid_of(const EnergyCurveRequest& req, double from, 
       grid.push_back(i + 1 == k ? to : from + (to - from) * (double(i) / double(k - 1)));
     return grid;
   }
-  if (req.every && !(*req.every > 0)) return Error{"the grid's spacing must be > 0, not " + short_number(*req.every)};
+  if (req.every && !(*req.every > 0)) return Error{"the grid's spacing must be > 0, not " + brief(*req.every)};
   const double tau = c.mean_free_time;
   double dt = req.every.value_or(std::isfinite(tau) ? tau / 20 : (to - from) / 1000);
   if (!(dt > 0)) dt = 1;  // a range of length 0: the grid is {from}
@@ -36,7 +36,7 @@ Result<std::vector<double>> grid_of(const EnergyCurveRequest& req, double from, 
   c.default_spacing = !req.every;
   grid = time_grid_to(from, to, dt, req.max_points);
   if (grid.empty())
-    return Error{"the grid of spacing " + short_number(dt) + " has more than " + std::to_string(req.max_points) +
+    return Error{"the grid of spacing " + brief(dt) + " has more than " + std::to_string(req.max_points) +
                  " points; give a larger spacing or fewer points"};
   return grid;
 }
@@ -90,8 +90,8 @@ Result<EnergyCurve> energy_curve(const Log& log, const EnergyCurveRequest& reque
   if (auto scene = log.scene()) c.restitution = scene.value().physics.restitution;
   const double from = request.from.value_or(0), to = request.to.value_or(o.end_time);
   if (!(from >= 0) || !(to >= from) || to > o.end_time)
-    return Error{path + ": the range " + short_number(from) + " to " + short_number(to) +
-                 " is not within the log (t = 0 to " + short_number(o.end_time) + ")"};
+    return Error{path + ": the range " + brief(from) + " to " + brief(to) +
+                 " is not within the log (t = 0 to " + brief(o.end_time) + ")"};
   auto grid = grid_of(request, from, to, c);
   if (!grid) return Error{path + ": " + grid.error().message};
   std::vector<double> times = std::move(grid).value();

@@ -42,17 +42,17 @@ Status choose_window(const LogReader& log, const LogDisks& disks, const Pressure
     const double skip = o.equilibration_mean_free_times * r.mean_free_time;
     r.t0 = std::min(skip, r.t1 / 2);
     if (!(skip <= r.t1 / 2))
-      r.warnings.push_back("the run is shorter than " + short_number(2 * o.equilibration_mean_free_times) +
-                           " mean free times: the window starts at half the run (t = " + short_number(r.t0) +
+      r.warnings.push_back("the run is shorter than " + brief(2 * o.equilibration_mean_free_times) +
+                           " mean free times: the window starts at half the run (t = " + brief(r.t0) +
                            "), and the gas may not have reached equilibrium by then; give --from to choose");
   }
   if (!std::isfinite(r.t0) || !std::isfinite(r.t1) || r.t0 < 0)
     return Error{"the window's ends must be finite times >= 0"};
   if (r.t1 > disks.end_time)
-    return Error{log.path() + ": the window ends at t = " + short_number(r.t1) +
-                 ", after the end of the log (t = " + short_number(disks.end_time) + ")"};
+    return Error{log.path() + ": the window ends at t = " + brief(r.t1) +
+                 ", after the end of the log (t = " + brief(disks.end_time) + ")"};
   if (!(r.t0 < r.t1))
-    return Error{"the window (" + short_number(r.t0) + ", " + short_number(r.t1) +
+    return Error{"the window (" + brief(r.t0) + ", " + brief(r.t1) +
                  "] is empty: it must start before it ends"};
   return Ok{};
 }
@@ -134,7 +134,7 @@ void fill_blocks_and_totals(const PressureBins& b, PressureReport& r) {
 void check_series(const std::string& name, const PressureSeries& s, PressureReport& r) {
   const double b = double(s.stats.blocks);
   if (s.stats.lag1 > 3 / std::sqrt(b))
-    r.warnings.push_back(name + ": the block values are correlated (lag-1 correlation " + short_number(s.stats.lag1) +
+    r.warnings.push_back(name + ": the block values are correlated (lag-1 correlation " + brief(s.stats.lag1) +
                          " for " + std::to_string(s.stats.blocks) + " blocks): use fewer, longer blocks");
   const BlockingAnalysis& fp = s.blocking;
   if (fp.trend == BlockingTrend::Rising)
@@ -144,15 +144,15 @@ void check_series(const std::string& name, const PressureSeries& s, PressureRepo
   const double err = s.stats.error;
   const double slack = 2 * std::hypot(err / std::sqrt(2 * (b - 1)), fp.levels[fp.plateau].error_of_error);
   if (fp.error > err + slack)
-    r.warnings.push_back(name + ": the blocking analysis gives a larger error (" + short_number(fp.error) +
-                         ") than the " + std::to_string(s.stats.blocks) + " blocks (" + short_number(err) +
+    r.warnings.push_back(name + ": the blocking analysis gives a larger error (" + brief(fp.error) +
+                         ") than the " + std::to_string(s.stats.blocks) + " blocks (" + brief(err) +
                          "): use fewer, longer blocks");
 }
 
 void check_report(PressureReport& r) {
   const double k0 = r.totals.kinetic_start, k1 = r.totals.kinetic_end;
   if (std::fabs(k1 - k0) > 1e-9 * std::fabs(k0))
-    r.warnings.push_back("the kinetic energy changed by " + short_number(100 * (k1 - k0) / k0) +
+    r.warnings.push_back("the kinetic energy changed by " + brief(100 * (k1 - k0) / k0) +
                          "% over the window (restitution < 1 or actions): the state is not stationary, "
                          "the pressures are window averages and the virial pressure is the collisional "
                          "stress, not an equilibrium pressure");

@@ -1,25 +1,19 @@
 // start_from_state; see run_start.hpp.
 #include "run/run_start.hpp"
 
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "core/xxh3.hpp"
 #include "ede/log.hpp"
+#include "ede/number_text.hpp"
 #include "setup/setup.hpp"
 #include "setup/setup_from_csv.hpp"
 
 namespace ede {
 
 namespace {
-
-std::string exact_double(double v) {
-  char text[40];
-  std::snprintf(text, sizeof text, "%.17g", v);
-  return text;
-}
 
 struct Source {
   InitialState initial;

@@ -79,21 +79,21 @@ std::string to_text(const RunSummary& s) {
     << c.of(EventKind::Action)
     << (c.of(EventKind::Segment) ? ", segment " + std::to_string(c.of(EventKind::Segment)) : std::string()) << "); samples " << c.of(EventKind::Sample) << ", stale predictions " << c.stale
     << ", TC-elastic " << c.tc_elastic << "\n"
-    << "collisions/disk  " << short_number(s.collisions_per_particle) << "\n"
-    << "simulated time   " << short_number(s.sim_time) << "\n"
-    << "wall time        " << short_number(s.wall_seconds) << " s (setup " << short_number(s.setup_seconds) << " s)"
+    << "collisions/disk  " << brief(s.collisions_per_particle) << "\n"
+    << "simulated time   " << brief(s.sim_time) << "\n"
+    << "wall time        " << brief(s.wall_seconds) << " s (setup " << brief(s.setup_seconds) << " s)"
     << (s.events_before ? " in this process, which resumed the run after event " + std::to_string(s.events_before)
                         : std::string())
     << "\n"
-    << "speed            " << short_number(s.events_per_second() / 1e6) << " M events/s, "
-    << short_number(s.collisions_per_second() / 1e6) << " M collisions/s\n"
-    << "kinetic energy   " << short_number(s.energy_initial) << " -> " << short_number(s.energy_final) << " (ratio "
-    << short_number(s.energy_initial > 0 ? s.energy_final / s.energy_initial : 0) << ")\n"
-    << "momentum         (" << short_number(s.momentum_initial[0]) << ", " << short_number(s.momentum_initial[1])
-    << ") -> (" << short_number(s.momentum_final[0]) << ", " << short_number(s.momentum_final[1]) << ")\n"
-    << "memory           engine " << short_number(double(s.engine_bytes) / 1048576) << " MiB ("
-    << short_number(s.disks ? double(s.engine_bytes) / double(s.disks) : 0) << " B/disk), peak RSS "
-    << short_number(double(s.peak_rss_bytes) / 1048576) << " MiB\n";
+    << "speed            " << brief(s.events_per_second() / 1e6) << " M events/s, "
+    << brief(s.collisions_per_second() / 1e6) << " M collisions/s\n"
+    << "kinetic energy   " << brief(s.energy_initial) << " -> " << brief(s.energy_final) << " (ratio "
+    << brief(s.energy_initial > 0 ? s.energy_final / s.energy_initial : 0) << ")\n"
+    << "momentum         (" << brief(s.momentum_initial[0]) << ", " << brief(s.momentum_initial[1])
+    << ") -> (" << brief(s.momentum_final[0]) << ", " << brief(s.momentum_final[1]) << ")\n"
+    << "memory           engine " << brief(double(s.engine_bytes) / 1048576) << " MiB ("
+    << brief(s.disks ? double(s.engine_bytes) / double(s.disks) : 0) << " B/disk), peak RSS "
+    << brief(double(s.peak_rss_bytes) / 1048576) << " MiB\n";
   return o.str();
 }
 
