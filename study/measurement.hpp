@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "ede/scene.hpp"
-#include "study/child_process.hpp"
+#include "process.hpp"  // tools/common: run_in_child
 
 namespace ede::study {
 
@@ -40,7 +40,7 @@ struct ChildMeasurement {
 };
 
 inline ChildMeasurement run_child_measurement(const std::function<int(std::string& output)>& body) {
-  const ChildResult r = run_in_child(body);
+  const tools::ChildResult r = tools::run_in_child(body);
   ChildMeasurement m;
   m.ok = r.ok;
   m.peak_rss = double(r.peak_rss_bytes);

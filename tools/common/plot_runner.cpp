@@ -1,4 +1,4 @@
-// run_plot_script; see plot_runner.hpp. The script runs through run_program (spawn.hpp): no shell, so
+// run_plot_script; see plot_runner.hpp. The script runs through run_program (process.hpp): no shell, so
 // file names with spaces or quotes are safe, and its stderr comes back for the message.
 //
 // The scripts are looked for beside the running program first (<bin>/EDE_PLOT_DIR_FROM_BIN, i.e.
@@ -17,7 +17,7 @@
 
 #include <filesystem>
 
-#include "spawn.hpp"
+#include "process.hpp"
 
 #ifndef EDE_PLOT_DIR
 #define EDE_PLOT_DIR "tools/plot"

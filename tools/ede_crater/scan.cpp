@@ -18,7 +18,7 @@
 #include <set>
 #include <thread>
 
-#include "child_process.hpp"
+#include "stop_signal.hpp"
 #include "plot_runner.hpp"
 #include "scan.hpp"
 

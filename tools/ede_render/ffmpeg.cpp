@@ -1,9 +1,9 @@
 // encode_movie and its command line; see ffmpeg.hpp.
 #include "ffmpeg.hpp"
 
-#include "number_text.hpp"
+#include "ede/number_text.hpp"
 #include "render.hpp"
-#include "spawn.hpp"
+#include "process.hpp"
 
 namespace ede::render {
 
@@ -13,7 +13,7 @@ std::vector<std::string> ffmpeg_arguments(const std::string& ffmpeg, const std::
                                           const std::string& output) {
   const std::string out = output.starts_with("-") ? "./" + output : output;  // not an option to ffmpeg
   std::vector<std::string> argv = {ffmpeg, "-nostdin", "-hide_banner", "-loglevel", "error", "-y", "-framerate",
-                                   tools::brief(fps), "-i", frames_dir + "/frame_%05d.png"};
+                                   brief(fps), "-i", frames_dir + "/frame_%05d.png"};
   if (ends_with(output, ".gif")) {
     argv.insert(argv.end(), {"-vf", "split[a][b];[a]palettegen=stats_mode=full[p];[b][p]paletteuse=dither=none",
                              "-loop", "0", out});

@@ -1,5 +1,5 @@
 // Encoding PNG frames into an MP4 or an animated GIF with ffmpeg, run as a child process through
-// run_program (spawn.hpp).
+// run_program (process.hpp).
 //
 // ffmpeg is found on PATH first (find_program; the README's set-up installs it), so the movie can fall back
 // to keeping the frames with a clear warning and the command that would encode them, quoted so that it

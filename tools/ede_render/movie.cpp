@@ -19,9 +19,9 @@
 #include "draw.hpp"
 #include "ffmpeg.hpp"
 #include "frames.hpp"
-#include "number_text.hpp"
+#include "ede/number_text.hpp"
 #include "render.hpp"
-#include "spawn.hpp"
+#include "process.hpp"
 
 namespace ede::render {
 
@@ -42,7 +42,7 @@ Result<std::vector<tools::TimeOption>> frame_times(const Options& opt, const Log
   const std::vector<Time> times = opt.frames ? evenly_spaced_times(from.t, to.t, std::size_t(*opt.frames), frames.scalar())
                                              : times_every(from.t, to.t, *opt.every, frames.scalar(), kMaxFrames);
   if (times.empty())
-    return Error{opt.every ? "--every " + tools::brief(*opt.every) + " gives more than " + std::to_string(kMaxFrames) +
+    return Error{opt.every ? "--every " + brief(*opt.every) + " gives more than " + std::to_string(kMaxFrames) +
                                  " frames"
                            : std::string("no frames")};
   std::vector<tools::TimeOption> out;
@@ -113,7 +113,7 @@ int finish(const Options& opt, const Target& target, int frames) {
     return fail(s.error().message + "\nthe frames are kept in " + target.frames_dir + "/");
   std::error_code ec;
   fs::remove_all(target.frames_dir, ec);
-  std::printf("wrote %s (%s at %s frames/s)\n", opt.output.c_str(), count.c_str(), tools::brief(opt.fps).c_str());
+  std::printf("wrote %s (%s at %s frames/s)\n", opt.output.c_str(), count.c_str(), brief(opt.fps).c_str());
   return 0;
 }
 

@@ -26,7 +26,7 @@
 #include <optional>
 
 #include "replay_tool.hpp"
-#include "spawn.hpp"
+#include "process.hpp"
 
 namespace ede::replay_tool {
 

@@ -18,7 +18,7 @@
 
 #include "command_line.hpp"
 #include "dry_run.hpp"
-#include "child_process.hpp"
+#include "stop_signal.hpp"
 #include "local_pool.hpp"
 #include "mpi_pool.hpp"
 #include "plot_runner.hpp"

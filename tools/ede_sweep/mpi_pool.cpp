@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <limits>
 
-#include "child_process.hpp"
+#include "stop_signal.hpp"
 #include "local_pool.hpp"
 
 #ifdef EDE_HAVE_MPI

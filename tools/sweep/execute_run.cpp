@@ -7,8 +7,9 @@
 #include <fstream>
 #include <limits>
 
-#include "child_process.hpp"
-#include "number_text.hpp"
+#include "process.hpp"
+#include "stop_signal.hpp"
+#include "ede/number_text.hpp"
 #include "sweep.hpp"
 
 namespace ede::sweep {
@@ -71,7 +72,7 @@ RunRow execute_run(const Sweep& s, std::size_t k) {
     return out;
   };
   for (int attempt = 0; attempt <= s.spec.retries; ++attempt) {
-    auto end = run_child_process(argv, err_path, s.spec.timeout);
+    auto end = tools::run_program({argv, false, "", err_path, s.spec.timeout});
     if (!end) {
       row.status = "failed";
       row.error = end.error().message;
@@ -91,7 +92,7 @@ RunRow execute_run(const Sweep& s, std::size_t k) {
     if (end.value().timed_out) {
       no_log(row);
       row.status = "timeout";
-      row.error = "stopped after the sweep's timeout of " + tools::brief(s.spec.timeout) +
+      row.error = "stopped after the sweep's timeout of " + brief(s.spec.timeout) +
                   " s (its log is kept: a rerun resumes it; raise timeout = ... to let it finish)";
       return row;  // a stalled run is not retried: it would stall again
     }
