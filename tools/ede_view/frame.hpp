@@ -66,7 +66,7 @@ struct FrameStatistics {
 FrameStatistics frame_statistics(const State& s, const Reference& ref);
 
 // A frame of `s` with statistics computed from it, or given (a live run reuses those of a state a few
-// milliseconds older at large N: live_run.hpp).
+// milliseconds older at large N: ede/live_run.hpp).
 std::string pack_frame(const State& s, const Reference& ref, const FrameExtras& extras, const FrameRequest& request);
 std::string pack_frame(const State& s, const Reference& ref, const FrameExtras& extras, const FrameRequest& request,
                        const FrameStatistics& statistics);

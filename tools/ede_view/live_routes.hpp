@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "http_util.hpp"
-#include "live_run.hpp"
+#include "live_runs.hpp"
 
 namespace ede::view {
 
