@@ -244,7 +244,7 @@ TEST_CASE("the engine's collision rules are format version 2's predictors", "[lo
   check_collisions<long double>();
 }
 
-TEST_CASE("the log includes nothing of the engine; the format's rules only the standard library", "[log][format_rules]") {
+TEST_CASE("the log includes nothing of the engine, and the format's rules only the standard library", "[log][format_rules]") {
   const std::filesystem::path src = std::filesystem::path(EDE_SOURCE_DIR) / "libede" / "src";
   int checked = 0;
   for_each_include(src / "log", [&](const std::filesystem::path& file, const std::string& included) {

@@ -19,6 +19,7 @@
 #include <mutex>
 
 #include "core/build_info.hpp"
+#include "core/engine_revision.hpp"
 #include "core/energy.hpp"
 #include "log/chunk_codec.hpp"
 #include "log/event_coder.hpp"
@@ -295,7 +296,7 @@ struct LogWriter<T>::Impl {
   // Every field of the header but the run id; `for_id`: the engine version, compiler and flags empty.
   void fill_header(logschema::Header::Builder h, const Particles<T>& p, bool for_id) {
     const std::size_t n = p.size();
-    h.setEngineVersion(for_id ? std::string() : run.engine_version.empty() ? std::string(EDE_VERSION) : run.engine_version);
+    h.setEngineVersion(for_id ? std::string() : run.engine_version.empty() ? engine_version_text() : run.engine_version);
     h.setCompiler(for_id ? std::string() : run.compiler.empty() ? build_compiler() : run.compiler);
     h.setCompileFlags(for_id ? std::string() : run.compile_flags.empty() ? build_flags() : run.compile_flags);
     h.setScalar(schema_scalar<T>());
