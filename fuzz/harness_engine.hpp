@@ -193,6 +193,7 @@ inline bool fuzz_engine(const std::uint8_t* data, std::size_t size) {
   info.set_restitution(o.physics);
   info.tc_model = ede::uses_tc_model(o.physics);
   info.rotation = rough;
+  info.engine_constants = true;
   ede::LogSettings settings;
   settings.chunk_events = 64;
   settings.keyframe_interval = 256;

@@ -27,20 +27,23 @@ namespace ede {
 template <class T>
 class EventCoder {
  public:
-  EventCoder(const EventPhysics<T>& physics, std::uint32_t format_version, bool check)
-      : physics_(physics), format_version_(format_version), check_(check) {}
+  // `trust`: the header's physics is the engine's (LogRunInfo::engine_constants), so its vouches hold; else
+  // every event is predicted here.
+  EventCoder(const EventPhysics<T>& physics, std::uint32_t format_version, bool check, bool trust = true)
+      : physics_(physics), format_version_(format_version), check_(check), trust_(trust) {}
 
   // The first disagreement `check` found (empty: none).
   const std::string& mismatch() const { return mismatch_; }
 
   CodedEvent<T> code(const EventOutcome<T>& e, const Particles<T>& p) {
+    const bool time_exact = trust_ && e.v2_time_exact, velocities_exact = trust_ && e.v2_velocities_exact;
     CodedEvent<T> c;
     c.time = e.time, c.kind = e.kind, c.tc_elastic = e.tc_elastic, c.i = e.i, c.j = e.j;
     if (format_version_ < 2) return code_v1(e, p, c);
-    c.predicted_time = e.v2_time_exact ? e.time : predicted_event_time(physics_, e.kind, e.before_i, e.before_j, e.j);
-    if (check_ && e.v2_time_exact) check_time(e);
+    c.predicted_time = time_exact ? e.time : predicted_event_time(physics_, e.kind, e.before_i, e.before_j, e.j);
+    if (check_ && time_exact) check_time(e);
     if (!collision(e.kind)) return c;
-    if (e.v2_velocities_exact) {
+    if (velocities_exact) {
       if (check_) check_velocities(e, p, c);
       return c;
     }
@@ -129,7 +132,7 @@ class EventCoder {
 
   const EventPhysics<T>& physics_;
   std::uint32_t format_version_;
-  bool check_;
+  bool check_, trust_;
   std::string mismatch_;
 };
 

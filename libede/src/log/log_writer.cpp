@@ -205,7 +205,7 @@ struct LogWriter<T>::Impl {
   RecordWriter out;
   // The header's physics, for the predictions made on the event loop (event_coder) and the header itself.
   EventPhysics<T> physics;
-  EventCoder<T> event_coder{physics, settings.format_version, settings.check_exactness};
+  EventCoder<T> event_coder{physics, settings.format_version, settings.check_exactness, run.engine_constants};
   ChunkCoder<T> coder{settings.format_version, run.rotation};  // the worker's
   ChunkPool<T> pool;
   bool coder_ready = false;

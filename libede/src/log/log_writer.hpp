@@ -60,6 +60,11 @@ struct LogRunInfo {
   std::vector<double> pair_roughness{-1};
   double wall_roughness = -1;
   std::string engine_version, compiler, compile_flags;  // empty: this build's (a converted log keeps its own)
+  // The box, restitution, roughness and segments above are the ones the engine runs with (log_run_info,
+  // run/log_run_info.hpp): only then does the writer take the engine's word for what it computed exactly as
+  // the format predicts (EventOutcome::v2_*_exact); else it predicts every event itself (the same bytes
+  // when the header is right, a larger but exact log when it is not).
+  bool engine_constants = false;
   // pair_restitution, wall_restitution and segments from the scene's physics, as the engine builds them.
   void set_restitution(const PhysicsSpec& physics);
 };
