@@ -817,12 +817,11 @@ class Engine final : public EngineApi<T> {
     ++counts_.by_kind[int(EventKind::Pair)];
     if (by_tc) ++counts_.tc_elastic;
     if (!sinks_.empty()) {
-      EventOutcome<T> o{now_, EventKind::Pair, by_tc, i, j, a.vx, a.vy, b.vx, b.vy, vix0, viy0, vjx0, vjy0};
-      if constexpr (kRough) o.wi = p_.omega[i], o.wj = p_.omega[j], o.wi0 = wi0, o.wj0 = wj0;
-      o.before_i = before_i, o.before_j = before_j;
-      o.v2_time_exact = time_exact_v2;
-      o.v2_velocities_exact = kRulesAreFormatV2;
-      emit(o);
+      T wi = 0, wj = 0;
+      if constexpr (kRough) wi = p_.omega[i], wj = p_.omega[j];
+      // Every field given (an aggregate's missing fields are zeroed: a memset of the whole outcome per event).
+      emit({now_, EventKind::Pair, by_tc, i, j, a.vx, a.vy, b.vx, b.vy, vix0, viy0, vjx0, vjy0, wi, wj, wi0, wj0,
+            before_i, before_j, time_exact_v2, kRulesAreFormatV2});
     }
     predict(i);
     predict(j);
@@ -858,11 +857,10 @@ class Engine final : public EngineApi<T> {
     ++counts_.by_kind[int(EventKind::Wall)];
     if (by_tc) ++counts_.tc_elastic;
     if (!sinks_.empty()) {
-      EventOutcome<T> o{now_, EventKind::Wall, by_tc, i, wall, d.vx, d.vy, T(0), T(0), vx0, vy0, T(0), T(0)};
-      if constexpr (kRough) o.wi = p_.omega[i], o.wi0 = wi0;
-      o.before_i = before;
-      o.v2_velocities_exact = kRulesAreFormatV2;
-      emit(o);
+      T wi = 0;
+      if constexpr (kRough) wi = p_.omega[i];
+      emit({now_, EventKind::Wall, by_tc, i, wall, d.vx, d.vy, T(0), T(0), vx0, vy0, T(0), T(0), wi, T(0), wi0, T(0),
+            before, before, false, kRulesAreFormatV2});
     }
     predict(i);
   }
@@ -885,10 +883,8 @@ class Engine final : public EngineApi<T> {
     ++counts_.by_kind[int(EventKind::Segment)];
     if (by_tc) ++counts_.tc_elastic;
     if (!sinks_.empty()) {
-      EventOutcome<T> o{now_, EventKind::Segment, by_tc, i, s, d.vx, d.vy, T(0), T(0), vx0, vy0, T(0), T(0)};
-      o.before_i = before;
-      o.v2_velocities_exact = kRulesAreFormatV2;
-      emit(o);
+      emit({now_, EventKind::Segment, by_tc, i, s, d.vx, d.vy, T(0), T(0), vx0, vy0, T(0), T(0), T(0), T(0), T(0),
+            T(0), before, before, false, kRulesAreFormatV2});
     }
     predict(i);
   }
@@ -942,9 +938,8 @@ class Engine final : public EngineApi<T> {
     const RecordBefore<T> before = record_before(d);
     wrap_disk(d, now_, kWrapOf[dir], lx_, ly_);
     if (!sinks_.empty()) {
-      EventOutcome<T> o{now_, EventKind::Wrap, false, i, kWrapOf[dir], d.vx, d.vy, T(0), T(0), d.vx, d.vy, T(0), T(0)};
-      o.before_i = before;
-      emit(o);
+      emit({now_, EventKind::Wrap, false, i, kWrapOf[dir], d.vx, d.vy, T(0), T(0), d.vx, d.vy, T(0), T(0), T(0), T(0),
+            T(0), T(0), before, before, false, false});
     }
   }
 
