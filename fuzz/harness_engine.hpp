@@ -23,6 +23,7 @@
 #include <string>
 
 #include "ede/internal/log.hpp"
+#include "ede/internal/physics.hpp"
 #include "ede/internal/run.hpp"
 
 namespace ede::fuzz {
@@ -186,7 +187,8 @@ inline bool fuzz_engine(const std::uint8_t* data, std::size_t size) {
   const MemFile file("fuzz-engine-log");
   if (!file.ok()) return true;
   const std::string path = file.path();
-  auto run = ede::start_run<double>(plan.value(), path);
+  // check_exactness: every prediction the engine vouches for, recomputed by the writer.
+  auto run = ede::start_run<double>(plan.value(), {path, true});
   CHECK_OR_FAIL(run.ok());
   ede::EngineApi<double>& engine = *run.value().engine;
   ede::LogWriter<double>& writer = *run.value().log;

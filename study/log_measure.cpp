@@ -54,7 +54,7 @@ int timed_run(const RunConfig& c, const Scene& scene, InitialState& initial, con
   if (!made) return out = made.error().message, 1;
   EngineApi<T>& engine = *made.value();
   const std::size_t disks = initial.size();
-  const LogRunInfo run_info = LogRunInfo::from(scene, options, initial.species_names);
+  const LogRunInfo run_info = log_run_info(scene, options, initial.species_names);
   initial = InitialState{};
   std::unique_ptr<LogWriter<T>> log;
   if (c.log) {

@@ -63,7 +63,7 @@ StressOutcome run_scene(const std::string& name, const std::string& text, const 
   const EngineOptions& options = plan.value().options;
   out.disks = plan.value().initial.size();
   const std::string log_path = o.out_dir + "/stress-" + name + ".ede";
-  auto run = start_run<double>(plan.value(), log_path);
+  auto run = start_run<double>(plan.value(), {log_path});
   if (!run) return fail(run.error().message);
   EngineApi<double>& engine = *run.value().engine;
   LogWriter<double>& writer = *run.value().log;

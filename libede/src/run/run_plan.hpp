@@ -50,18 +50,23 @@ struct Resumption {
   std::uint32_t format_version = 0;
 };
 
+// Where a run writes its event log, if anywhere.
+struct RunLog {
+  std::string path;              // "": no log
+  bool check_exactness = false;  // LogSettings::check_exactness: recompute what the engine vouches for
+};
+
 template <class T>
 struct RunEngine {
   std::unique_ptr<EngineApi<T>> engine;
   LogWriterFor<T> log;  // null without a log path; not yet a sink of the engine: the caller adds it
 };
 
-// The engine for `plan` in T and, given a path, its log writer (with `resume`, continuing that log). The
+// The engine for `plan` in T and, given a log path, its log writer (with `resume`, continuing that log). The
 // plan's disks are freed once the engine holds them, before the log writer allocates (~52 B/disk less
 // at the peak); its scene, box, species names and note stay. The log writer is left for the caller to
 // add as the engine's first sink, behind whatever must see the outcomes first (Simulation's finite guard).
 template <class T>
-Result<RunEngine<T>> start_run(RunPlan& plan, const std::string& log_path = {},
-                                const Resumption<T>* resume = nullptr);
+Result<RunEngine<T>> start_run(RunPlan& plan, const RunLog& log = {}, const Resumption<T>* resume = nullptr);
 
 }  // namespace ede

@@ -210,7 +210,7 @@ Result<std::unique_ptr<Simulation::Impl>> make_in(RunPlan plan, const std::share
     py0 += plan.initial.mass[i] * plan.initial.vy[i];
   }
   const std::string log_path = resumed ? resumed->path() : options.log_path;
-  auto run = start_run<T>(plan, log_path, resumption ? &*resumption : nullptr);
+  auto run = start_run<T>(plan, {log_path, options.check_exactness}, resumption ? &*resumption : nullptr);
   if (!run) return run.error();
   const std::uint64_t before = resumption ? resumption->point.counts.events() : 0;
   const std::uint64_t collisions_before = resumption ? resumption->point.counts.collisions() : 0;

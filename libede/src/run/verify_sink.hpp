@@ -9,7 +9,7 @@
 
 #include <string>
 
-#include "engine/sink.hpp"
+#include "core/sink.hpp"
 #include "log/log_reader.hpp"
 #include "replay/event_compare.hpp"
 #include "replay/replay.hpp"

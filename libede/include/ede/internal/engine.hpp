@@ -6,4 +6,4 @@
 #include "core/particles.hpp"
 #include "core/scalar_dispatch.hpp"
 #include "engine/engine.hpp"
-#include "engine/sink.hpp"
+#include "core/sink.hpp"
