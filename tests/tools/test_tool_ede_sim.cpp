@@ -59,6 +59,14 @@ TEST_CASE("ede-sim runs the default scene and reports the required JSON keys", "
   CHECK(j["effects"].get<std::string>().rfind("walls, elastic", 0) == 0);
 }
 
+TEST_CASE("the default scene, the README's demo, runs without a warning", "[tool][ede-sim]") {
+  const std::string log = std::string(EDE_BINARY_DIR) + "/tests/default-scene.ede";
+  const ToolRun r = run_tool("ede-sim", source_path("examples/gas.toml") + " --quiet -o " + log, "default-scene");
+  REQUIRE(r.status == 0);
+  CHECK(r.err.empty());
+  CHECK(r.out.find("warning") == std::string::npos);
+}
+
 TEST_CASE("ede-sim prints a readable summary", "[tool][ede-sim]") {
   const ToolRun r = run_tool("ede-sim", source_path("examples/gas.toml") + " --quiet", "text");
   REQUIRE(r.status == 0);
