@@ -187,16 +187,17 @@ inline bool fuzz_engine(const std::uint8_t* data, std::size_t size) {
   info.species_names = s.species_names;
   info.boundary = o.boundary;
   info.rebuild_interval = o.rebuild_interval;
-  for (const ede::SegmentSpec& g : o.physics.segments)  // replay predicts segment events from these
-    info.segments.insert(info.segments.end(), {g.from[0], g.from[1], g.to[0], g.to[1], g.restitution});
-  if (rough) {  // the header's 1 + beta: replay predicts the spins from them
-    info.rotation = true;
-    info.pair_roughness = {o.physics.roughness};
-    info.wall_roughness = o.physics.wall_roughness;
-  }
+  info.lx = s.lx, info.ly = s.ly;
+  // The header describes the run as the engine runs it (run/log_run_info.cpp): the restitution, roughness
+  // and segments replay predicts from, and the TC model.
+  info.set_restitution(o.physics);
+  info.tc_model = ede::uses_tc_model(o.physics);
+  info.rotation = rough;
+  info.engine_constants = true;
   ede::LogSettings settings;
   settings.chunk_events = 64;
   settings.keyframe_interval = 256;
+  settings.check_exactness = true;  // every prediction the engine vouches for, recomputed
   auto writer = ede::LogWriter<double>::create(path, info, settings);
   CHECK_OR_FAIL(writer.ok());
   engine.add_sink(writer.value().get());

@@ -4,6 +4,7 @@
 // second thread is the child's own, so getrusage(RUSAGE_SELF) in the child is the CPU time of exactly
 // one run's two threads). Log sizes do not depend on timing (the writer's bytes are a function of the
 // events); the caller reads the log afterwards and deletes it.
+#include "run/log_run_info.hpp"
 #include "study/log_measure.hpp"
 
 #include <sys/resource.h>
@@ -56,7 +57,7 @@ int timed_run(const RunConfig& c, const Scene& scene, InitialState& initial, con
   if (!made) return out = made.error().message, 1;
   EngineApi<T>& engine = *made.value();
   const std::size_t disks = initial.size();
-  const LogRunInfo run_info = LogRunInfo::from(scene, options, initial.species_names);
+  const LogRunInfo run_info = log_run_info(scene, options, initial.species_names);
   initial = InitialState{};
   std::unique_ptr<LogWriter<T>> log;
   if (c.log) {

@@ -1,4 +1,5 @@
 // The stress study; see stress.hpp.
+#include "run/log_run_info.hpp"
 #include "study/stress.hpp"
 
 #include <chrono>
@@ -69,7 +70,7 @@ StressOutcome run_scene(const std::string& name, const std::string& text, const 
   EngineApi<double>& engine = *made.value();
   out.disks = initial.value().size();
   const std::string log_path = o.out_dir + "/stress-" + name + ".ede";
-  auto writer = LogWriter<double>::create(log_path, LogRunInfo::from(scene.value(), options, initial.value().species_names),
+  auto writer = LogWriter<double>::create(log_path, log_run_info(scene.value(), options, initial.value().species_names),
                                           LogSettings::from(scene.value().log));
   if (!writer) return fail(writer.error().message);
   engine.add_sink(writer.value().get());

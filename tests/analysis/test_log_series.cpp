@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "run/log_run_info.hpp"
 #include "ede/analysis.hpp"
 #include "ede/analysis.hpp"
 #include "analysis/log_series.hpp"
@@ -35,7 +36,7 @@ std::string run_scene(const std::string& toml, const std::string& file) {
   LogSettings settings;
   settings.chunk_events = 256;
   settings.keyframe_interval = 1000;
-  auto writer = LogWriter<T>::create(path, LogRunInfo::from(scene.value(), options, initial.value().species_names),
+  auto writer = LogWriter<T>::create(path, log_run_info(scene.value(), options, initial.value().species_names),
                                      settings);
   REQUIRE(writer);
   engine->add_sink(writer.value().get());

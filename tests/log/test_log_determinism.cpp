@@ -11,6 +11,7 @@
 #include <fstream>
 #include <thread>
 
+#include "run/log_run_info.hpp"
 #include "core/xxh3.hpp"
 #include "replay/log_digest.hpp"
 #include "ede/scene.hpp"
@@ -67,7 +68,7 @@ std::string run_pinned_scene(const std::string& file) {
   auto e = make_engine<double>(initial.value(), options);
   REQUIRE(e.ok());
   const std::string path = temp_path(file);
-  auto w = LogWriter<double>::create(path, LogRunInfo::from(scene.value(), options, initial.value().species_names),
+  auto w = LogWriter<double>::create(path, log_run_info(scene.value(), options, initial.value().species_names),
                                      LogSettings::from(scene.value().log));
   REQUIRE(w.ok());
   e.value()->add_sink(w.value().get());

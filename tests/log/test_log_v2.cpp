@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "run/log_run_info.hpp"
 #include "ede_log.capnp.h"
 #include "log/log_messages.hpp"
 #include "log_test_support.hpp"
@@ -131,7 +132,7 @@ std::string run_scene(const std::string& toml, const std::string& file, std::uin
   const std::string path = temp_path(file);
   LogSettings settings = LogSettings::from(scene.value().log);
   settings.format_version = version;
-  auto w = LogWriter<double>::create(path, LogRunInfo::from(scene.value(), options, initial.value().species_names),
+  auto w = LogWriter<double>::create(path, log_run_info(scene.value(), options, initial.value().species_names),
                                      settings);
   REQUIRE(w.ok());
   e.value()->add_sink(w.value().get());

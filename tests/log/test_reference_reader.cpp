@@ -5,6 +5,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "run/log_run_info.hpp"
 #include "ede/scene.hpp"
 #include "log_test_support.hpp"
 #include "reference_compare.hpp"
@@ -31,7 +32,7 @@ std::string run_example(const Scene& scene, const std::string& file) {
   auto e = make_engine<T>(initial.value(), options);
   REQUIRE(e.ok());
   const std::string path = temp_path(file);
-  auto w = LogWriter<T>::create(path, LogRunInfo::from(scene, options, initial.value().species_names),
+  auto w = LogWriter<T>::create(path, log_run_info(scene, options, initial.value().species_names),
                                 LogSettings::from(scene.log));
   REQUIRE(w.ok());
   e.value()->add_sink(w.value().get());

@@ -34,7 +34,7 @@ struct Options {
   std::string scene_path, log_path, resume_path, continue_path, final_state_path;
   std::vector<std::string> overrides;
   std::optional<double> at;
-  bool json = false, quiet = false;
+  bool json = false, quiet = false, check_exactness = false;
 };
 
 int fail(const std::string& message) {
@@ -125,6 +125,9 @@ int run(int argc, char** argv) {
   app.add_flag("--json", opt.json, "print the summary as one JSON object on stdout");
   app.add_option("--final-state", opt.final_state_path, "write the final state as CSV (exact numbers)");
   app.add_flag("-q,--quiet", opt.quiet, "no progress output");
+  app.add_flag("--check-exactness", opt.check_exactness,
+               "the log writer recomputes every prediction the engine vouches for and fails the run at the first "
+               "that differs (slower; the same log)");
   ede::tools::add_version_flags(app, "ede-sim");
   if (const auto stop = ede::tools::parse_command_line(app, argc, argv)) return *stop;
   if (int(!opt.resume_path.empty()) + int(!opt.scene_path.empty()) + int(!opt.continue_path.empty()) != 1)
@@ -145,6 +148,7 @@ int run(int argc, char** argv) {
                                        progress.update(p.fraction, p.events, p.time);
                                        pace.update(p.fraction, p.events, p.wall_seconds);
                                      }};
+  sim_options.check_exactness = opt.check_exactness;
   auto made = start(opt, sim_options);
   if (!made) return fail(made.error().message);
   ede::Simulation& sim = made.value();

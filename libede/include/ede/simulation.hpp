@@ -79,6 +79,11 @@ struct SimulationOptions {
   // Keep running sums of the impulses the disks give the walls and each other (Simulation::impulses), for
   // a live pressure monitor. Off by default: it costs one more call per event.
   bool impulses = false;
+  // The log writer recomputes every prediction the engine vouches for (a pair collision's time and
+  // velocities are coded as exact without computing them: schema/FORMAT.md, "Versioning and the promise")
+  // and the run fails with an error at the first that differs. Slower; the same bytes. The tests run every
+  // example scene with it (ede-sim --check-exactness).
+  bool check_exactness = false;
 };
 
 // Running sums over every event this process ran (SimulationOptions::impulses), exactly as

@@ -21,7 +21,7 @@
 #include "ede/error.hpp"
 #include "ede/events.hpp"
 #include "ede/scene.hpp"
-#include "engine/sink.hpp"
+#include "core/sink.hpp"
 
 namespace ede {
 

@@ -69,14 +69,17 @@ class Engine final : public EngineApi<T> {
   // direction, kept apart so a crossing can update the collision part with the new neighbours only. The
   // crossing's time is not kept: it only chooses the queue key, right when it is computed (the key holds
   // whichever time won). 16 bytes in double (32 before issue 15's memory round: docs/performance.md):
-  // `who` = partner (29 bits: disk id, WallId or segment number; all ones for none) | kind code << 29;
-  // `check` = the partner's counter when predicted (its low 30 bits) << 2 | crossing direction. A pair
-  // prediction is stale when the partner's counter moved since: 30 bits wrap only after 2^30 collisions of
-  // the partner while this prediction stands, as 32 bits did after 2^32 (never, in any run so far).
+  // `who` = partner (29 bits: disk id, WallId or segment number; all ones for none) | kind code << 29 |
+  // fresh << 31; `check` = the partner's counter when predicted (its low 30 bits) << 2 | crossing direction.
+  // A pair prediction is stale when the partner's counter moved since: 30 bits wrap only after 2^30
+  // collisions of the partner while this prediction stands, as 32 bits did after 2^32 (never, in any run so
+  // far). `fresh`: the collision was predicted at the time of this disk's own record, which has not changed
+  // since (a wrap clears it): what lets the engine vouch for a pair's time to the log (pair_time_exact_v2).
   // Rejected: separate fields (24 B with the padding).
   struct Prediction {
     static constexpr std::uint32_t kPartnerBits = kTagDiskBits, kPartnerMask = (1u << kPartnerBits) - 1;
     static constexpr std::uint32_t kCounterMask = (1u << 30) - 1;
+    static constexpr std::uint32_t kFreshBit = 1u << 31;
     T t_coll;
     std::uint32_t who;
     std::uint32_t check;
@@ -87,21 +90,23 @@ class Engine final : public EngineApi<T> {
     }
     EventKind coll_kind() const {
       static constexpr EventKind kOf[] = {EventKind::Pair, EventKind::Wall, EventKind::Segment, EventKind::Pair};
-      return kOf[who >> kPartnerBits];
+      return kOf[(who >> kPartnerBits) & 3u];
     }
     // The partner of a pending (finite) event: never none.
     std::int32_t partner_id() const { return std::int32_t(who & kPartnerMask); }
     CrossDir cross_dir() const { return CrossDir(check & 3u); }
     bool partner_moved(std::uint32_t counter_now) const { return ((counter_now ^ (check >> 2)) & kCounterMask) != 0; }
+    bool fresh() const { return (who & kFreshBit) != 0; }
+    void clear_fresh() { who &= ~kFreshBit; }
     // The whole prediction at once (predict()); set_coll and set_cross update one part (cross_cell()).
-    void set(const Candidate<T>& c, std::uint32_t counter, CrossDir dir) {
+    void set(const Candidate<T>& c, std::uint32_t counter, CrossDir dir, bool is_fresh) {
       t_coll = c.time;
-      who = code_of(c);
+      who = code_of(c) | (is_fresh ? kFreshBit : 0u);
       check = (counter & kCounterMask) << 2 | std::uint32_t(dir);
     }
-    void set_coll(const Candidate<T>& c, std::uint32_t counter) {
+    void set_coll(const Candidate<T>& c, std::uint32_t counter, bool is_fresh) {
       t_coll = c.time;
-      who = code_of(c);
+      who = code_of(c) | (is_fresh ? kFreshBit : 0u);
       check = (counter & kCounterMask) << 2 | (check & 3u);
     }
     // Partner -1 (none) becomes all ones in 29 bits by the mask; the kind code is 0 Pair, 1 Wall, 2 Segment.
@@ -134,6 +139,8 @@ class Engine final : public EngineApi<T> {
     prefetch_ahead_ = init.size() >= options.prefetch_upcoming_from;
     grid_.reset(shape.nx, shape.ny, lx_, ly_, p_.disk);
     find_big_disks(init, shape.split);
+    pair_times_vouchable_ = std::is_same_v<Contact, StableContact> && big_.empty() &&
+                            (!kPeriodic || (grid_.nx() >= 5 && grid_.ny() >= 5));
     if constexpr (kSegments) setup_segments(options.physics, init, shape);
     queue_.reset(static_cast<std::uint32_t>(p_.size()));
     pred_.assign(p_.size(), Prediction{kNever<T>, Prediction::kPartnerMask, 0});
@@ -666,7 +673,7 @@ class Engine final : public EngineApi<T> {
     if (!big_.empty()) scan_big(i, pi, vi, big, best);
     Prediction& pr = pred_[i];
     const Crossing<T> cross = crossing(d, cell);
-    pr.set(best, counter_of(best), cross.dir);
+    pr.set(best, counter_of(best), cross.dir, now_ == d.t);
     push(i, cross.time, best.kind);
   }
 
@@ -705,6 +712,30 @@ class Engine final : public EngineApi<T> {
     }
   }
 
+  // --- what the engine vouches for to the log ----------------------------------------------------
+  // The log (format version 2) codes each event against its own predictors (log/event_predictions.hpp, over
+  // log/rules/). Where the engine knows it computed exactly what they would, it says so with the event
+  // (EventOutcome::v2_*_exact) and the writer codes a residual of 0 without computing anything; elsewhere
+  // the writer runs the predictor on the records the event carries. A wrong vouch would make a log decode
+  // wrongly, so each one rests on a test: tests/log/test_format_rules.cpp (the engine's functions give the
+  // format's bits) and tests/log/test_log_exactness.cpp (every example scene written with the writer
+  // recomputing what was vouched for, log.check_exactness).
+  // The collision rules (engine/collide.hpp) are format version 2's: every velocity and spin residual is 0.
+  // An engine whose rule changes sets this false (and its logs grow) until a format version follows it.
+  static constexpr bool kRulesAreFormatV2 = true;
+
+  // A pair's time as format version 2 predicts it from the two records just before the event is exactly the
+  // time this engine predicted when: the owner's prediction was made at the time of its own record, which is
+  // unchanged since (fresh); the partner's record is strictly older (so the format predicts from the owner's
+  // side, at the same now; an equal time would let the format take the other side); the partner's image is
+  // the one the format picks (no big disks, whose images are chosen apart; in a periodic box at least five
+  // cells a side, so a neighbour's image is within a tenth of the box of the nearest one); and the root is
+  // the format's (StableContact; the select scan gives its bits).
+  bool pair_time_exact_v2(std::int32_t owner, const Prediction& pr) const {
+    if (!pair_times_vouchable_ || !pr.fresh()) return false;
+    return p_.disk[pr.partner_id()].t < p_.disk[owner].t;
+  }
+
   // --- events -------------------------------------------------------------------------------------
   // Returns false for a stale prediction (discarded, the disk re-predicted).
   bool process_disk_event(const QueueKey<T>& key) {
@@ -720,7 +751,7 @@ class Engine final : public EngineApi<T> {
     note_time(key.time);
     now_ = key.time;
     switch (kind) {
-      case EventKind::Pair: resolve_pair(i, pr.partner_id()); break;
+      case EventKind::Pair: resolve_pair(i, pr.partner_id(), pair_time_exact_v2(i, pr)); break;
       case EventKind::Wall: resolve_wall(i, pr.partner_id()); break;
       case EventKind::Segment:
         if constexpr (kSegments) resolve_segment(i, pr.partner_id());
@@ -749,8 +780,11 @@ class Engine final : public EngineApi<T> {
 
   // The pair is resolved in the order (lower id, higher id) whichever disk owned the prediction, so the
   // rounding of the result does not depend on who predicted it (cells and all-pairs engines agree).
-  void resolve_pair(std::int32_t i, std::int32_t j) {
+  void resolve_pair(std::int32_t i, std::int32_t j, bool time_exact_v2) {
     if (j < i) std::swap(i, j);
+    const RecordBefore<T> before_i = record_before(p_.disk[i]), before_j = record_before(p_.disk[j]);
+    T wi0 = 0, wj0 = 0;
+    if constexpr (kRough) wi0 = p_.omega[i], wj0 = p_.omega[j];
     advance(i);
     advance(j);
     Disk<T>& a = p_.disk[i];
@@ -784,7 +818,10 @@ class Engine final : public EngineApi<T> {
     if (by_tc) ++counts_.tc_elastic;
     if (!sinks_.empty()) {
       EventOutcome<T> o{now_, EventKind::Pair, by_tc, i, j, a.vx, a.vy, b.vx, b.vy, vix0, viy0, vjx0, vjy0};
-      if constexpr (kRough) o.wi = p_.omega[i], o.wj = p_.omega[j];
+      if constexpr (kRough) o.wi = p_.omega[i], o.wj = p_.omega[j], o.wi0 = wi0, o.wj0 = wj0;
+      o.before_i = before_i, o.before_j = before_j;
+      o.v2_time_exact = time_exact_v2;
+      o.v2_velocities_exact = kRulesAreFormatV2;
       emit(o);
     }
     predict(i);
@@ -792,6 +829,9 @@ class Engine final : public EngineApi<T> {
   }
 
   void resolve_wall(std::int32_t i, std::int32_t wall) {
+    const RecordBefore<T> before = record_before(p_.disk[i]);
+    T wi0 = 0;
+    if constexpr (kRough) wi0 = p_.omega[i];
     advance(i);
     Disk<T>& d = p_.disk[i];
     const T vx0 = d.vx, vy0 = d.vy;
@@ -819,7 +859,9 @@ class Engine final : public EngineApi<T> {
     if (by_tc) ++counts_.tc_elastic;
     if (!sinks_.empty()) {
       EventOutcome<T> o{now_, EventKind::Wall, by_tc, i, wall, d.vx, d.vy, T(0), T(0), vx0, vy0, T(0), T(0)};
-      if constexpr (kRough) o.wi = p_.omega[i];
+      if constexpr (kRough) o.wi = p_.omega[i], o.wi0 = wi0;
+      o.before_i = before;
+      o.v2_velocities_exact = kRulesAreFormatV2;
       emit(o);
     }
     predict(i);
@@ -828,6 +870,7 @@ class Engine final : public EngineApi<T> {
   // A disk hits wall segment s (core/segment.hpp): the segment's rule (collide_segment) at the disk's
   // position now, which tells body from end point; like a wall, it leaves no partner to skip.
   void resolve_segment(std::int32_t i, std::int32_t s) {
+    const RecordBefore<T> before = record_before(p_.disk[i]);
     advance(i);
     Disk<T>& d = p_.disk[i];
     const T vx0 = d.vx, vy0 = d.vy;
@@ -841,7 +884,12 @@ class Engine final : public EngineApi<T> {
     d.last_partner = -1;
     ++counts_.by_kind[int(EventKind::Segment)];
     if (by_tc) ++counts_.tc_elastic;
-    if (!sinks_.empty()) emit({now_, EventKind::Segment, by_tc, i, s, d.vx, d.vy, T(0), T(0), vx0, vy0, T(0), T(0)});
+    if (!sinks_.empty()) {
+      EventOutcome<T> o{now_, EventKind::Segment, by_tc, i, s, d.vx, d.vy, T(0), T(0), vx0, vy0, T(0), T(0)};
+      o.before_i = before;
+      o.v2_velocities_exact = kRulesAreFormatV2;
+      emit(o);
+    }
     predict(i);
   }
 
@@ -857,7 +905,7 @@ class Engine final : public EngineApi<T> {
     cx += step_x;
     cy += step_y;
     if constexpr (kPeriodic) {
-      if (kind == EventKind::Wrap) wrap(i, dir);
+      if (kind == EventKind::Wrap) wrap(i, dir), pred_[i].clear_fresh();  // its record moved: see Prediction
       cx = (cx + grid_.nx()) % grid_.nx();
       cy = (cy + grid_.ny()) % grid_.ny();
     }
@@ -882,7 +930,7 @@ class Engine final : public EngineApi<T> {
     if (!big_.empty()) scan_big(i, pi, vi, big, best);
     if constexpr (kSegments) scan_segments(p_.disk[i], grid_.cell_of(i), big, best);
     if (best.time != pr.t_coll || best.kind != pr.coll_kind() || best.partner != pr.partner())
-      pr.set_coll(best, counter_of(best));
+      pr.set_coll(best, counter_of(best), now_ == p_.disk[i].t);
     const Crossing<T> cross = crossing(p_.disk[i], grid_.cell_of(i));
     pr.set_cross(cross.dir);
     push(i, cross.time, best.kind);
@@ -891,9 +939,13 @@ class Engine final : public EngineApi<T> {
   void wrap(std::int32_t i, CrossDir dir) {
     static constexpr std::int32_t kWrapOf[] = {kWrapRight, kWrapLeft, kWrapTop, kWrapBottom};
     Disk<T>& d = p_.disk[i];
+    const RecordBefore<T> before = record_before(d);
     wrap_disk(d, now_, kWrapOf[dir], lx_, ly_);
-    if (!sinks_.empty())
-      emit({now_, EventKind::Wrap, false, i, kWrapOf[dir], d.vx, d.vy, T(0), T(0), d.vx, d.vy, T(0), T(0)});
+    if (!sinks_.empty()) {
+      EventOutcome<T> o{now_, EventKind::Wrap, false, i, kWrapOf[dir], d.vx, d.vy, T(0), T(0), d.vx, d.vy, T(0), T(0)};
+      o.before_i = before;
+      emit(o);
+    }
   }
 
   void sample(T t) {
@@ -1147,6 +1199,7 @@ class Engine final : public EngineApi<T> {
   T b_noise2_ = 0;  // round-off floor of b, geometry.hpp
   bool prefetch_ahead_ = false;  // prefetch_upcoming() (EngineOptions::prefetch_upcoming_from)
   bool select_pairs_ = false;  // consider_pair without branches (kSelectPairs, EngineOptions)
+  bool pair_times_vouchable_ = false;  // pair_time_exact_v2's conditions that hold for the whole run
   T now_ = 0;
   T stop_time_ = kNever<T>;
   double ke0_ = 0, ke_ = 0;

@@ -10,8 +10,9 @@
 //   residuals   varint zigzag(key(v) - key(prediction)): pair v_j' against momentum conservation
 //               (m_i v_i + m_j v_j - m_i v_i') / m_j; wall v' against a perfect reflection
 // Encoding 2 (format version 2): every velocity and time coded against what replay predicts from the state
-// just before the event (log/event_predictions.hpp), so an ordinary run's velocities cost ~0 and its times
-// a byte or so:
+// just before the event (log/event_predictions.hpp, over the format's own arithmetic in log/rules/), so an
+// ordinary run's velocities cost ~0 and its times a byte or so; the encoder reads that state from the
+// records each event carries (log/logged_event.hpp), the decoder from the state it replays:
 //   kinds       one byte: the kind, plus kTcElasticFlag when the TC model made the collision elastic
 //   disks, partners  as in encoding 1
 //   times       varint: 2 zigzag(key(t) - key(predicted t)), or 2 (key(t) - key(previous t)) + 1 when that
@@ -34,23 +35,19 @@
 #include <string>
 #include <vector>
 
-#include "log/byte_columns.hpp"
-#include "log/id_lookahead.hpp"
 #include "core/event.hpp"
 #include "core/particles.hpp"
 #include "ede/error.hpp"
-#include "core/state_update.hpp"
+#include "log/byte_columns.hpp"
 #include "log/event_predictions.hpp"
+#include "log/id_lookahead.hpp"
+#include "log/logged_event.hpp"
 #include "log/message_words.hpp"
+#include "log/rules/predictions_v1.hpp"
+#include "log/rules/state_update.hpp"
 #include "log/scalar_bytes.hpp"
 
 namespace ede {
-
-// The prediction of v_j' from momentum conservation, in one fixed order of operations.
-template <class T>
-inline T momentum_prediction(T mi, T mj, T vi0, T vj0, T vi1) {
-  return ((mi * vi0 + mj * vj0) - mi * vi1) / mj;
-}
 
 // zigzag(key(actual) - key(predicted)). Keys of 64 bits or fewer (float, double) take the difference's
 // magnitude in 64-bit arithmetic (it always fits) and zigzag it as 2|d| or 2|d| - 1: the same value as the
@@ -80,30 +77,19 @@ constexpr std::uint32_t kLatestColumnEncoding = 2;
 // tc_elastic, and then the segment events only in a run with segments (FORMAT.md, "Keyframe").
 constexpr int kCountedKindsV2 = 6;
 
-// The time a version 2 log predicts for an event from the state just before it (kNever: no prediction).
-template <class T, class S>
-inline T predicted_event_time(const EventPhysics<T>& ph, const S& s, EventKind kind, std::int32_t i, std::int32_t j) {
-  switch (kind) {
-    case EventKind::Pair: return predict_pair_time(ph, s, i, j);
-    case EventKind::Wall: return predict_wall_time(ph, record_of(s, std::size_t(i)), j);
-    case EventKind::Wrap: return predict_wrap_time(ph, record_of(s, std::size_t(i)), j);
-    case EventKind::Segment: return predict_segment_time(ph, record_of(s, std::size_t(i)), j);
-    default: return kNever<T>;
-  }
-}
-
 // The raw columns of one chunk, as the encoder fills them and the schema stores them.
 struct ChunkColumns {
   std::vector<unsigned char> times, kinds, disks, partners, raw, residuals;  // raw: already shuffled
   std::vector<unsigned char> spins;  // rough runs only
 };
 
+// Codes events into columns. The predictions are made before (log/event_coder.hpp): the encoder only turns
+// each value and its prediction into a residual, a varint in its column.
 template <class T>
 class ChunkEncoder {
  public:
-  // Encoding 2 reads the physics (and `state` in add): the caller keeps them alive.
-  ChunkEncoder(const std::vector<T>& mass, std::uint32_t encoding, const EventPhysics<T>& physics)
-      : mass_(mass), encoding_(encoding), physics_(physics) {}
+  // `rough`: a rough run's version 2 chunks carry the spin column.
+  ChunkEncoder(std::uint32_t encoding, bool rough) : encoding_(encoding), rough_(rough) {}
 
   void reset(std::uint64_t first_event) {
     first_event_ = first_event;
@@ -113,14 +99,11 @@ class ChunkEncoder {
     spins_.clear();
   }
 
-  // `before`: the state just before the event, as replay has it (encoding 2 only): a Particles<T> or the
-  // writer's CoderState<T>.
-  template <class S>
-  void add(const EventOutcome<T>& e, const S& before) {
+  void add(const CodedEvent<T>& e) {
     if (encoding_ == 1)
       add_v1(e);
     else
-      add_v2(e, before);
+      add_v2(e);
     if (count_ == 0) time_first_ = e.time;
     time_last_ = e.time;
     ++count_;
@@ -137,79 +120,60 @@ class ChunkEncoder {
   }
 
  private:
-  void add_v1(const EventOutcome<T>& e) {
+  // Version 1: v = the velocities after the event, pv = before it.
+  void add_v1(const CodedEvent<T>& e) {
     const u128 key = ordered_key(e.time);
     times_.varint(key - previous_key_);
     previous_key_ = key;
     kinds_.byte(static_cast<unsigned char>(e.kind));
     switch (e.kind) {
-      case EventKind::Pair: add_pair_v1(e); break;
-      case EventKind::Wall: add_wall_v1(e); break;
+      case EventKind::Pair:
+        add_ids(e);
+        add_scalar(e.v[0]);
+        add_scalar(e.v[1]);
+        residuals_.varint(residual(e.v[2], rules::v1::momentum_prediction(e.mi, e.mj, e.pv[0], e.pv[2], e.v[0])));
+        residuals_.varint(residual(e.v[3], rules::v1::momentum_prediction(e.mi, e.mj, e.pv[1], e.pv[3], e.v[1])));
+        break;
+      case EventKind::Wall: {
+        add_ids(e);
+        const bool vertical = e.j == rules::kLeft || e.j == rules::kRight;
+        residuals_.varint(residual(e.v[0], vertical ? -e.pv[0] : e.pv[0]));
+        residuals_.varint(residual(e.v[1], vertical ? e.pv[1] : -e.pv[1]));
+        break;
+      }
       case EventKind::Wrap: add_ids(e); break;
       case EventKind::Segment:
         add_ids(e);
-        residuals_.varint(residual(e.vix, e.vix0));
-        residuals_.varint(residual(e.viy, e.viy0));
+        residuals_.varint(residual(e.v[0], e.pv[0]));
+        residuals_.varint(residual(e.v[1], e.pv[1]));
         break;
       default: break;  // Action: the kind and time say it all
     }
   }
 
-  template <class S>
-  void add_v2(const EventOutcome<T>& e, const S& s) {
-    const bool collision = e.kind == EventKind::Pair || e.kind == EventKind::Wall || e.kind == EventKind::Segment;
-    bool tc = collision && e.tc_elastic;
-    // An event that does not say (a converted version 1 log) gets the flag when only the elastic rule
-    // predicts it exactly; in a run the engine's own flag is always the one that does.
-    if (collision && !tc && physics_.tc_model && !rule_exact(e, s, false) && rule_exact(e, s, true)) tc = true;
-    kinds_.byte(static_cast<unsigned char>(static_cast<unsigned char>(e.kind) | (tc ? kTcElasticFlag : 0)));
+  void add_v2(const CodedEvent<T>& e) {
+    kinds_.byte(static_cast<unsigned char>(static_cast<unsigned char>(e.kind) | (e.tc_elastic ? kTcElasticFlag : 0)));
     if (e.kind == EventKind::Pair || e.kind == EventKind::Wall || e.kind == EventKind::Wrap ||
         e.kind == EventKind::Segment)
       add_ids(e);
-    add_time_v2(e.time, predicted_event_time(physics_, s, e.kind, e.i, e.j));
-    if (e.kind == EventKind::Pair) {
-      T v[4], w[2] = {};  // w: rough runs only (GCC cannot see that the omega tests agree)
-      predict_pair_velocities(physics_, s, e.i, e.j, e.time, tc, v, w);
-      residuals_.varint(residual(e.vix, v[0]));
-      residuals_.varint(residual(e.viy, v[1]));
-      residuals_.varint(residual(e.vjx, v[2]));
-      residuals_.varint(residual(e.vjy, v[3]));
-      if (!s.omega.empty()) spins_.varint(residual(e.wi, w[0])), spins_.varint(residual(e.wj, w[1]));
-    } else if (e.kind == EventKind::Wall) {
-      T v[2], w[1] = {};
-      predict_wall_velocity(physics_, s, e.i, e.j, e.time, tc, v, w);
-      residuals_.varint(residual(e.vix, v[0]));
-      residuals_.varint(residual(e.viy, v[1]));
-      if (!s.omega.empty()) spins_.varint(residual(e.wi, w[0]));
-    } else if (e.kind == EventKind::Segment) {
-      T v[2];
-      predict_segment_velocity(physics_, s, e.i, e.j, e.time, tc, v);
-      residuals_.varint(residual(e.vix, v[0]));
-      residuals_.varint(residual(e.viy, v[1]));
+    add_time_v2(e.time, e.predicted_time);
+    const int velocities = e.kind == EventKind::Pair ? 4 : e.kind == EventKind::Wall || e.kind == EventKind::Segment ? 2 : 0;
+    const int spins = !rough_ ? 0 : e.kind == EventKind::Pair ? 2 : e.kind == EventKind::Wall ? 1 : 0;
+    if (e.velocities_predicted) {  // every residual 0: one byte each
+      for (int k = 0; k < velocities; ++k) residuals_.byte(0);
+      for (int k = 0; k < spins; ++k) spins_.byte(0);
+      return;
     }
+    for (int k = 0; k < velocities; ++k) residuals_.varint(residual(e.v[k], e.pv[k]));
+    for (int k = 0; k < spins; ++k) spins_.varint(residual(e.w[k], e.pw[k]));
   }
-
-  template <class S>
-  bool rule_exact(const EventOutcome<T>& e, const S& s, bool tc) const {
-    T v[4];
-    if (e.kind == EventKind::Pair) {
-      predict_pair_velocities(physics_, s, e.i, e.j, e.time, tc, v);
-      return same_bits(v[0], e.vix) && same_bits(v[1], e.viy) && same_bits(v[2], e.vjx) && same_bits(v[3], e.vjy);
-    }
-    if (e.kind == EventKind::Segment)
-      predict_segment_velocity(physics_, s, e.i, e.j, e.time, tc, v);
-    else
-      predict_wall_velocity(physics_, s, e.i, e.j, e.time, tc, v);
-    return same_bits(v[0], e.vix) && same_bits(v[1], e.viy);
-  }
-  static bool same_bits(T a, T b) { return ordered_key(a) == ordered_key(b); }
 
   // The smaller of the residual against the prediction (even code) and the delta to the previous event.
   void add_time_v2(T t, T predicted) {
     const u128 key = ordered_key(t);
     const u128 delta = key - previous_key_;
     previous_key_ = key;
-    if (predicted != kNever<T> && predicted == predicted) {
+    if (predicted != rules::v2::kNever<T> && predicted == predicted) {
       const u128 r = residual(t, predicted);
       if (r < delta) {
         times_.varint(r << 1);
@@ -219,7 +183,7 @@ class ChunkEncoder {
     times_.varint((delta << 1) | 1);
   }
 
-  void add_ids(const EventOutcome<T>& e) {
+  void add_ids(const CodedEvent<T>& e) {
     disks_.varint(u128(e.i));
     if (e.kind == EventKind::Pair)
       partners_.varint(zigzag(i128(e.j) - i128(e.i)));
@@ -233,25 +197,8 @@ class ChunkEncoder {
     raw_.raw(b, sizeof b);
   }
 
-  void add_pair_v1(const EventOutcome<T>& e) {
-    add_ids(e);
-    add_scalar(e.vix);
-    add_scalar(e.viy);
-    const T mi = mass_[std::size_t(e.i)], mj = mass_[std::size_t(e.j)];
-    residuals_.varint(residual(e.vjx, momentum_prediction(mi, mj, e.vix0, e.vjx0, e.vix)));
-    residuals_.varint(residual(e.vjy, momentum_prediction(mi, mj, e.viy0, e.vjy0, e.viy)));
-  }
-
-  void add_wall_v1(const EventOutcome<T>& e) {
-    add_ids(e);
-    const bool vertical = e.j == kWallLeft || e.j == kWallRight;
-    residuals_.varint(residual(e.vix, vertical ? -e.vix0 : e.vix0));
-    residuals_.varint(residual(e.viy, vertical ? e.viy0 : -e.viy0));
-  }
-
-  const std::vector<T>& mass_;
   std::uint32_t encoding_;
-  const EventPhysics<T>& physics_;
+  bool rough_;
   std::uint64_t first_event_ = 0;
   std::uint32_t count_ = 0;
   u128 previous_key_ = 0;
@@ -268,7 +215,7 @@ struct DecodedEvent {
   std::int32_t i = -1, j = -1;
   T vix{}, viy{}, vjx{}, vjy{};
   bool tc_elastic = false;  // encoding 2: the kind byte's TC flag
-  // Encoding 2 pairs: the positions of i and j at `time` (advance_disk), computed for the prediction and
+  // Encoding 2 pairs: the positions of i and j at `time` (rules::bring_to), computed for the prediction and
   // reused by apply_event instead of advancing the records a second time (same function, same bits).
   bool advanced = false;
   T xi{}, yi{}, xj{}, yj{};
@@ -361,27 +308,19 @@ inline bool finite_record(const Disk<T>& d) {
   return std::isfinite(double(d.x)) && std::isfinite(double(d.y)) && std::isfinite(double(d.t));
 }
 
-// The record of disk i to change: a reference into replay's Particles<T>; the writer's CoderState<T> has
-// its own overload (log/coder_state.hpp), a copy written back when it goes out of scope.
+// Applies a decoded event to replay's state with the format's state update (log/rules/state_update.hpp).
 template <class T>
-[[gnu::always_inline]] inline Disk<T>& writable_record(Particles<T>& p, std::size_t i) {
-  return p.disk[i];
-}
-
-template <class T, class S>
-[[gnu::always_inline]] inline bool apply_event(const DecodedEvent<T>& e, S& p, T lx, T ly) {
+[[gnu::always_inline]] inline bool apply_event(const DecodedEvent<T>& e, Particles<T>& p, T lx, T ly) {
   switch (e.kind) {
     case EventKind::Pair: {
-      auto&& ra = writable_record(p, std::size_t(e.i));
-      auto&& rb = writable_record(p, std::size_t(e.j));
-      Disk<T>& a = ra;
-      Disk<T>& b = rb;
+      Disk<T>& a = p.disk[std::size_t(e.i)];
+      Disk<T>& b = p.disk[std::size_t(e.j)];
       if (e.advanced) {
         a.x = e.xi, a.y = e.yi, a.t = e.time;
         b.x = e.xj, b.y = e.yj, b.t = e.time;
       } else {
-        advance_disk(a, e.time, p.gx, p.gy);
-        advance_disk(b, e.time, p.gx, p.gy);
+        rules::bring_to(a, e.time, p.gx, p.gy);
+        rules::bring_to(b, e.time, p.gx, p.gy);
       }
       a.vx = e.vix, a.vy = e.viy, b.vx = e.vjx, b.vy = e.vjy;
       if (!p.omega.empty()) p.omega[std::size_t(e.i)] = e.wi, p.omega[std::size_t(e.j)] = e.wj;
@@ -389,25 +328,21 @@ template <class T, class S>
     }
     case EventKind::Wall:
     case EventKind::Segment: {
-      auto&& ra = writable_record(p, std::size_t(e.i));
-      Disk<T>& a = ra;
-      advance_disk(a, e.time, p.gx, p.gy);
+      Disk<T>& a = p.disk[std::size_t(e.i)];
+      rules::bring_to(a, e.time, p.gx, p.gy);
       a.vx = e.vix, a.vy = e.viy;
       if (!p.omega.empty() && e.kind == EventKind::Wall) p.omega[std::size_t(e.i)] = e.wi;
       return finite_record(a);
     }
     case EventKind::Wrap: {
-      auto&& ra = writable_record(p, std::size_t(e.i));
-      Disk<T>& a = ra;
-      wrap_disk(a, e.time, e.j, lx, ly);
+      Disk<T>& a = p.disk[std::size_t(e.i)];
+      rules::wrap(a, e.time, e.j, lx, ly);
       return finite_record(a);
     }
     case EventKind::Action: {
       bool ok = true;
-      for (std::size_t i = 0; i < p.size(); ++i) {
-        auto&& r = writable_record(p, i);
-        Disk<T>& d = r;
-        reverse_disk(d, e.time, p.gx, p.gy);
+      for (Disk<T>& d : p.disk) {
+        rules::reverse(d, e.time, p.gx, p.gy);
         ok = ok && finite_record(d);
       }
       for (T& w : p.omega) w = -w;  // rough logs: Engine::reverse_velocities
@@ -416,6 +351,5 @@ template <class T, class S>
     default: return true;
   }
 }
-
 
 }  // namespace ede

@@ -186,6 +186,18 @@ bool ChunkDecoder<T>::read_ids(DecodedEvent<T>& e) {
   }
 }
 
+// A disk's velocity at time t from replay's record, by the format's state update.
+template <class T>
+T vx_at(const Particles<T>& p, std::int32_t i, T t) {
+  const Disk<T>& d = p.disk[std::size_t(i)];
+  return rules::velocity_along(d.vx, p.gx, d.t, t);
+}
+template <class T>
+T vy_at(const Particles<T>& p, std::int32_t i, T t) {
+  const Disk<T>& d = p.disk[std::size_t(i)];
+  return rules::velocity_along(d.vy, p.gy, d.t, t);
+}
+
 // Encoding 1: the time came first; then ids and velocities.
 template <class T>
 bool ChunkDecoder<T>::read_fields(const Particles<T>& p, DecodedEvent<T>& e) {
@@ -193,55 +205,72 @@ bool ChunkDecoder<T>::read_fields(const Particles<T>& p, DecodedEvent<T>& e) {
   switch (e.kind) {
     case EventKind::Pair: {
       // Velocities just before the event: the records' own, moved on by gravity if there is any.
-      const T aix = p.vx_at(std::size_t(e.i), e.time), aiy = p.vy_at(std::size_t(e.i), e.time);
-      const T ajx = p.vx_at(std::size_t(e.j), e.time), ajy = p.vy_at(std::size_t(e.j), e.time);
+      const T aix = vx_at(p, e.i, e.time), aiy = vy_at(p, e.i, e.time);
+      const T ajx = vx_at(p, e.j, e.time), ajy = vy_at(p, e.j, e.time);
       const T mi = p.mass(std::size_t(e.i)), mj = p.mass(std::size_t(e.j));
       if (!read_scalar(e.vix) || !read_scalar(e.viy)) return false;
-      return read_residual(momentum_prediction(mi, mj, aix, ajx, e.vix), e.vjx) &&
-             read_residual(momentum_prediction(mi, mj, aiy, ajy, e.viy), e.vjy);
+      return read_residual(rules::v1::momentum_prediction(mi, mj, aix, ajx, e.vix), e.vjx) &&
+             read_residual(rules::v1::momentum_prediction(mi, mj, aiy, ajy, e.viy), e.vjy);
     }
     case EventKind::Wall: {
-      const T ax = p.vx_at(std::size_t(e.i), e.time), ay = p.vy_at(std::size_t(e.i), e.time);
-      const bool vertical = e.j == kWallLeft || e.j == kWallRight;
+      const T ax = vx_at(p, e.i, e.time), ay = vy_at(p, e.i, e.time);
+      const bool vertical = e.j == rules::kLeft || e.j == rules::kRight;
       return read_residual(vertical ? -ax : ax, e.vix) && read_residual(vertical ? ay : -ay, e.viy);
     }
     case EventKind::Segment: {
-      const T ax = p.vx_at(std::size_t(e.i), e.time), ay = p.vy_at(std::size_t(e.i), e.time);
+      const T ax = vx_at(p, e.i, e.time), ay = vy_at(p, e.i, e.time);
       return read_residual(ax, e.vix) && read_residual(ay, e.viy);
     }
     default: return true;
   }
 }
 
+// What the velocity predictors read of disk i in replay's state.
+template <class T>
+DiskTraits<T> traits_of(const Particles<T>& p, std::size_t i) {
+  DiskTraits<T> c;
+  c.mass = p.mass(i);
+  c.species = p.species_of(i);
+  if (!p.omega.empty()) c.omega = p.omega[i], c.inertia = p.inertia[i];
+  return c;
+}
+
 // Encoding 2: kind and ids, then the time against its prediction, then the velocities against theirs.
 // Pairs (nearly every event) take a path compiled for the header's gravity (kGravity = false: the gravity
-// branches of the predictor and of advance_disk fold away; the same bits, since with g = 0 they are drift).
+// branches of the predictor and of bring_to fold away; the same bits, since with g = 0 they are drift).
 template <class T>
 template <bool kGravity>
 bool ChunkDecoder<T>::read_v2(const Particles<T>& p, DecodedEvent<T>& e) {
   if (!read_kind(e) || !read_ids(e)) return false;
+  const bool rough = !p.omega.empty();
   if (e.kind == EventKind::Pair) {
-    if (!read_time_v2([&] { return predict_pair_time<T, kGravity>(physics_, p, e.i, e.j); }, e.time)) return false;
+    const Disk<T>& ri = p.disk[std::size_t(e.i)];
+    const Disk<T>& rj = p.disk[std::size_t(e.j)];
+    if (!read_time_v2([&] { return predict_pair_time<T, kGravity>(physics_, ri, rj); }, e.time)) return false;
     const T gx = kGravity ? physics_.gx : T(0), gy = kGravity ? physics_.gy : T(0);
-    Disk<T> a = p.disk[std::size_t(e.i)], b = p.disk[std::size_t(e.j)];
-    advance_disk(a, e.time, gx, gy);
-    advance_disk(b, e.time, gx, gy);
+    RecordBefore<T> a = record_before(ri), b = record_before(rj);
+    rules::bring_to(a, e.time, gx, gy);
+    rules::bring_to(b, e.time, gx, gy);
     e.advanced = true;
     e.xi = a.x, e.yi = a.y, e.xj = b.x, e.yj = b.y;
-    T v[4], w[2] = {};  // w: rough runs only (GCC cannot see that the omega tests agree)
-    predict_pair_velocities(physics_, p, e.i, e.j, a, b, e.tc_elastic, v, w);
+    T v[4], w[2] = {};  // w: rough runs only
+    predict_pair_velocities(physics_, a, b, traits_of(p, std::size_t(e.i)), traits_of(p, std::size_t(e.j)), rough,
+                            e.tc_elastic, v, w);
     return read_residual(v[0], e.vix) && read_residual(v[1], e.viy) && read_residual(v[2], e.vjx) &&
-           read_residual(v[3], e.vjy) && (p.omega.empty() || (read_spin(w[0], e.wi) && read_spin(w[1], e.wj)));
+           read_residual(v[3], e.vjy) && (!rough || (read_spin(w[0], e.wi) && read_spin(w[1], e.wj)));
   }
-  if (!read_time_v2([&] { return predicted_event_time(physics_, p, e.kind, e.i, e.j); }, e.time)) return false;
+  const Disk<T>* d = e.i >= 0 ? &p.disk[std::size_t(e.i)] : nullptr;
+  if (!read_time_v2([&] { return d ? predicted_event_time(physics_, e.kind, *d, *d, e.j) : rules::v2::kNever<T>; },
+                    e.time))
+    return false;
   if (e.kind == EventKind::Wall) {
-    T v[2], w[1] = {};
-    predict_wall_velocity(physics_, p, e.i, e.j, e.time, e.tc_elastic, v, w);
-    return read_residual(v[0], e.vix) && read_residual(v[1], e.viy) && (p.omega.empty() || read_spin(w[0], e.wi));
+    T v[2], w[2] = {};
+    predict_wall_velocity(physics_, *d, e.time, e.j, traits_of(p, std::size_t(e.i)), rough, e.tc_elastic, v, w);
+    return read_residual(v[0], e.vix) && read_residual(v[1], e.viy) && (!rough || read_spin(w[0], e.wi));
   }
   if (e.kind == EventKind::Segment) {
     T v[2];
-    predict_segment_velocity(physics_, p, e.i, e.j, e.time, e.tc_elastic, v);
+    predict_segment_velocity(physics_, *d, e.time, e.j, e.tc_elastic, v);
     return read_residual(v[0], e.vix) && read_residual(v[1], e.viy);
   }
   return true;

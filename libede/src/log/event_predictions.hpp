@@ -1,34 +1,34 @@
-// What replay predicts of a logged event from the replayed state just before it (format version 2,
-// schema/FORMAT.md "Predictions"): the post-event velocities by the engine's own collision rules, and
-// the event's time by the engine's own contact, wall and cell-exit time functions. Writer and reader call
-// these same functions with the same inputs, so a prediction is the same bits on both sides; the log
-// stores only the residual against it, which is 0 (one byte, compressed to almost nothing) whenever the
-// engine computed exactly this.
+// What format version 2 predicts of a logged event (schema/FORMAT.md, "Predicted times" and "Predicted
+// velocities"): its time from the records of its disks just before it, and the velocities (and spins) after
+// it by the collision rules, with the header's physics. The log stores only the residual against each
+// prediction: 0 (one byte, compressed to almost nothing) when the engine computed exactly this.
 //
-// The rules are the engine's (engine/collide.hpp, engine/predict_pair.hpp, core/geometry.hpp), called, not
-// copied: when the engine changes a rule, old logs still decode (the residuals carry the difference) and
-// new logs simply grow until the predictor follows. What the engine knows and replay does not is either
-// in the header (restitution per species pair and per wall) or in the event itself (the TC model's
-// "this collision was made elastic" flag, one bit of the kind byte), so no prediction needs history.
-// A pair's time is predicted at now = the later of the two records' times, which is when the engine
+// The arithmetic is the format's own, frozen with version 2 (log/rules/: written from FORMAT.md, including
+// nothing of the engine's), so a version 2 log decodes to the same states whatever a later engine does; the
+// engine keeps its own functions, and tests/log/test_format_rules.cpp shows where they agree bit for bit (a
+// residual is 0 there). What the engine knows and replay does not is either in the header (restitution per
+// species pair and per wall, segments, roughness) or in the event itself (the TC model's "made elastic"
+// flag, one bit of the kind byte), so no prediction needs history.
+// The predictors read records (any type with x, y, vx, vy, t and r: replay's Disk<T>, or the copies the
+// engine hands the log writer with each event, log/logged_event.hpp), so the writer needs no copy of the
+// state. A pair's time is predicted at now = the later of the two records' times, which is when the engine
 // predicted it unless it did so at a cell crossing, a rebuild or before a periodic wrap of one of them:
 // then the residual is a few ulps (a few bytes), never wrong.
-// Rejected: tracking TC collision times in replay (non-resumable keyframes do not carry them, so a seek
-// would have to start at a resumable one) and storing the engine's prediction time with each event (as
-// large as the time residual it would save).
+// Rejected: the engine's own functions as predictors (version 2 did so until issue 33: a one-bit change to
+// a collision rule would have changed what every existing log decodes to), tracking TC collision times in
+// replay (non-resumable keyframes do not carry them) and storing the engine's prediction time with each
+// event (as large as the time residual it would save).
 #pragma once
 
 #include <algorithm>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
-#include "core/drift.hpp"
-#include "core/event.hpp"
-#include "core/geometry.hpp"
-#include "core/particles.hpp"
-#include "core/segment.hpp"
-#include "engine/collide.hpp"
-#include "engine/predict_pair.hpp"
+#include "ede/events.hpp"
+#include "log/rules/collisions_v2.hpp"
+#include "log/rules/geometry_v2.hpp"
+#include "log/rules/state_update.hpp"
 
 namespace ede {
 
@@ -43,24 +43,22 @@ struct EventPhysics {
   std::vector<T> one_plus_xi{T(2)};  // species x species, row-major: 1 + xi of the pair
   T xi_wall[4] = {1, 1, 1, 1};
   bool tc_model = false;  // writer only: the run may make collisions elastic (ChunkEncoder's TC flag)
-  // Wall segments, built by make_segment from the header's scalars as the engine builds them from the
-  // scene's doubles converted to T (the same values, so the same unit vectors).
-  std::vector<Segment<T>> segments;
-  // Rough runs (the header's onePlusBeta; the replayed state then has omega and inertia): 1 + beta per
-  // species pair, row-major like one_plus_xi, and of the box walls.
+  std::vector<rules::v2::Segment<T>> segments;  // from the header's scalars (FORMAT.md "Wall segments")
+  // Rough runs (the header's onePlusBeta): 1 + beta per species pair, row-major, and of the box walls.
   std::vector<T> one_plus_beta{T(0)};
   T wall_one_plus_beta = 0;
+  bool rough = false;  // a rough log (the header has moments of inertia): spins are coded and predicted
 
-  // The box as the engine sets it up (engine_core.hpp: lx_, half_lx_, b_noise2_).
   static EventPhysics box(double lx, double ly, bool periodic, T gx, T gy) {
     EventPhysics p;
     p.lx = T(lx), p.ly = T(ly);
     p.half_lx = p.lx / 2, p.half_ly = p.ly / 2;
     p.periodic = periodic;
     p.gx = gx, p.gy = gy;
-    p.b_noise2 = b_noise2_for(std::max(p.lx, p.ly));
+    p.b_noise2 = rules::v2::noise_floor2(p.lx, p.ly);
     return p;
   }
+  bool gravity() const { return gx != T(0) || gy != T(0); }
   T pair_one_plus_xi(std::int32_t si, std::int32_t sj) const {
     const std::size_t a = std::size_t(si), b = std::size_t(sj);
     if (a >= species || b >= species) return one_plus_xi[0];
@@ -73,166 +71,146 @@ struct EventPhysics {
   }
 };
 
-// What the predictors read of a state: replay's Particles<T> through these (references into it, so replay's
-// code is what it was), the log writer's CoderState<T> (log/coder_state.hpp: x, y, vx, vy, t per disk)
-// through its own overloads, found by argument-dependent lookup when a predictor is instantiated.
+// What the velocity predictors read of a disk besides its record: mass and species, and in a rough log
+// its spin before the event and its moment of inertia.
 template <class T>
-[[gnu::always_inline]] inline const Disk<T>& record_of(const Particles<T>& p, std::size_t i) {
-  return p.disk[i];
-}
-template <class T>
-[[gnu::always_inline]] inline T mass_of(const Particles<T>& p, std::size_t i) {
-  return p.mass(i);
-}
-template <class T>
-[[gnu::always_inline]] inline std::int32_t species_of(const Particles<T>& p, std::size_t i) {
-  return p.species_of(i);
-}
+struct DiskTraits {
+  T mass{};
+  std::int32_t species = 0;
+  T omega{}, inertia{};
+};
 
-// Post-collision velocities of pair (i, j) at time t, as Engine::resolve_pair computes them: both records
-// brought to t, the separation with the nearest periodic image, the collision rule with 1 + xi of the
-// pair (2 when the TC model made it elastic). `a` and `b` are the records of i and j already brought to t
-// (advance_disk): replay keeps them and stores them with the new velocities instead of advancing twice.
-// Rough runs (p.omega not empty): the tangential part too (Engine::resolve_pair: after the normal rule, from
-// the velocities and spins before the collision, skipped when the TC model made it elastic), and the
-// spins after it in w[0], w[1] when w is given.
-template <class T, class S>
-inline void predict_pair_velocities(const EventPhysics<T>& ph, const S& p, std::int32_t i, std::int32_t j,
-                                    const Disk<T>& a, const Disk<T>& b, bool tc_elastic, T v[4], T* w = nullptr) {
-  T dx = b.x - a.x, dy = b.y - a.y;
-  if (ph.periodic) {
-    if (dx > ph.half_lx) dx -= ph.lx; else if (dx < -ph.half_lx) dx += ph.lx;
-    if (dy > ph.half_ly) dy -= ph.ly; else if (dy < -ph.half_ly) dy += ph.ly;
-  }
-  const T opx = tc_elastic ? T(2) : ph.pair_one_plus_xi(species_of(p, std::size_t(i)), species_of(p, std::size_t(j)));
-  v[0] = a.vx, v[1] = a.vy, v[2] = b.vx, v[3] = b.vy;
-  collide_pair(dx, dy, mass_of(p, std::size_t(i)), mass_of(p, std::size_t(j)), opx, v[0], v[1], v[2], v[3]);
-  if (p.omega.empty()) return;
-  const std::size_t si = std::size_t(i), sj = std::size_t(j);
-  T wi = p.omega[si], wj = p.omega[sj];
-  const T opb = tc_elastic ? T(0) : ph.pair_one_plus_beta(species_of(p, si), species_of(p, sj));
-  collide_pair_tangential(dx, dy, b.vx - a.vx, b.vy - a.vy, mass_of(p, si), mass_of(p, sj), a.r, b.r, p.inertia[si],
-                          p.inertia[sj], opb, v[0], v[1], v[2], v[3], wi, wj);
-  if (w) w[0] = wi, w[1] = wj;
-}
-
-template <class T, class S>
-inline void predict_pair_velocities(const EventPhysics<T>& ph, const S& p, std::int32_t i, std::int32_t j, T t,
-                                    bool tc_elastic, T v[4], T* w = nullptr) {
-  Disk<T> a = record_of(p, std::size_t(i)), b = record_of(p, std::size_t(j));
-  advance_disk(a, t, ph.gx, ph.gy);
-  advance_disk(b, t, ph.gx, ph.gy);
-  predict_pair_velocities(ph, p, i, j, a, b, tc_elastic, v, w);
-}
-
-// Velocity after disk i hits `wall` at time t (Engine::resolve_wall). With xi_w = 1 collide_wall computes
-// exactly what collide_wall_elastic does (a multiplication by 1 and a negation are exact).
-// Rough runs: then the wall's tangential part (not when TC-elastic), the spin after it in *w if given.
-template <class T, class S>
-inline void predict_wall_velocity(const EventPhysics<T>& ph, const S& p, std::int32_t i, std::int32_t wall, T t,
-                                  bool tc_elastic, T v[2], T* w = nullptr) {
-  v[0] = p.vx_at(std::size_t(i), t), v[1] = p.vy_at(std::size_t(i), t);
-  const T vx0 = v[0], vy0 = v[1];
-  const bool vertical = wall == kWallLeft || wall == kWallRight;
-  if (tc_elastic)
-    collide_wall_elastic(vertical, v[0], v[1]);
-  else
-    collide_wall(vertical, ph.xi_wall[wall & 3], v[0], v[1]);
-  if (p.omega.empty()) return;
-  static constexpr int kNormal[4][2] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};  // Engine::kWallNormal
-  const std::size_t si = std::size_t(i);
-  T wi = p.omega[si];
-  collide_wall_tangential(T(kNormal[wall & 3][0]), T(kNormal[wall & 3][1]), vx0, vy0, mass_of(p, si), record_of(p, si).r,
-                          p.inertia[si], tc_elastic ? T(0) : ph.wall_one_plus_beta, v[0], v[1], wi);
-  if (w) *w = wi;
-}
-
-// Velocity after disk i hits segment s at time t (Engine::resolve_segment): a copy of the record brought
-// to t, then the segment's rule with its 1 + xi (2 with the TC flag).
-template <class T, class S>
-inline void predict_segment_velocity(const EventPhysics<T>& ph, const S& p, std::int32_t i, std::int32_t s, T t,
-                                     bool tc_elastic, T v[2]) {
-  Disk<T> d = record_of(p, std::size_t(i));
-  advance_disk(d, t, ph.gx, ph.gy);
-  v[0] = d.vx, v[1] = d.vy;
-  if (s < 0 || std::size_t(s) >= ph.segments.size()) return;  // a version 1 log's header lists no segments
-  const Segment<T>& g = ph.segments[std::size_t(s)];
-  collide_segment(g, d.x, d.y, tc_elastic ? T(2) : g.one_plus_xi, v[0], v[1]);
-}
-
-// Time disk i hits segment s, from its record alone (Engine::scan_segments without the clamp to now).
-template <class T>
-inline T predict_segment_time(const EventPhysics<T>& ph, const Disk<T>& d, std::int32_t s) {
-  if (s < 0 || std::size_t(s) >= ph.segments.size()) return kNever<T>;
-  const T dt = segment_contact_time(ph.segments[std::size_t(s)], d.x, d.y, d.vx, d.vy, d.r, ph.b_noise2);
-  return dt == kNever<T> ? kNever<T> : d.t + dt;
-}
-
-// Time of pair (i, j): predicted by the disk whose record is later (i on a tie), at now = that record's
-// time, against the partner's image nearest at now (Engine::pair_time; predict_pair without gravity).
-// kGravity = false is for callers that know the header has no gravity (gx = gy = 0): the same bits, with
-// the gravity branches compiled out (replay's decoder; position_along with g = 0 is drift exactly).
-template <class T, bool kGravity = true, class S>
-[[gnu::always_inline]] inline T predict_pair_time(const EventPhysics<T>& ph, const S& p, std::int32_t i,
-                                                  std::int32_t j) {
-  // References (to the records, or to the writer's materialised copies: lifetime extended).
-  const Disk<T>& ri = record_of(p, std::size_t(i));
-  const Disk<T>& rj = record_of(p, std::size_t(j));
-  const Disk<T>* di = &ri;
-  const Disk<T>* dj = &rj;
+// Time of pair (i, j) from their records a (of i) and b (of j): predicted by the disk whose record is
+// later (i on a tie), at now = that record's time, against the partner's image nearest at now.
+// kGravity = false is for callers that know the header has no gravity: the same bits, with the gravity
+// branches compiled out (replay's decoder; position_along with g = 0 is drift exactly).
+template <class T, bool kGravity = true, class R>
+[[gnu::always_inline]] inline T predict_pair_time(const EventPhysics<T>& ph, const R& a, const R& b) {
+  const R* di = &a;
+  const R* dj = &b;
   if (dj->t > di->t) std::swap(di, dj);
   const T now = di->t;
   const T gx = kGravity ? ph.gx : T(0), gy = kGravity ? ph.gy : T(0);
-  const T pix = position_along(di->x, di->vx, gx, di->t, now), piy = position_along(di->y, di->vy, gy, di->t, now);
-  const T pjx = position_along(dj->x, dj->vx, gx, dj->t, now), pjy = position_along(dj->y, dj->vy, gy, dj->t, now);
+  const T pix = rules::position_along(di->x, di->vx, gx, di->t, now);
+  const T piy = rules::position_along(di->y, di->vy, gy, di->t, now);
+  const T pjx = rules::position_along(dj->x, dj->vx, gx, dj->t, now);
+  const T pjy = rules::position_along(dj->y, dj->vy, gy, dj->t, now);
   T sx = 0, sy = 0;
   if (ph.periodic) {
     const T ex = pjx - pix, ey = pjy - piy;
     sx = ex > ph.half_lx ? -ph.lx : ex < -ph.half_lx ? ph.lx : T(0);
     sy = ey > ph.half_ly ? -ph.ly : ey < -ph.half_ly ? ph.ly : T(0);
   }
-  if (gx == T(0) && gy == T(0))
-    return predict_pair<StableContact>(*di, Position2<T>{pix, piy}, *dj, sx, sy, now, ph.b_noise2);
-  const T vix = velocity_along(di->vx, gx, di->t, now), viy = velocity_along(di->vy, gy, di->t, now);
-  const T vjx = velocity_along(dj->vx, gx, dj->t, now), vjy = velocity_along(dj->vy, gy, dj->t, now);
-  return now + StableContact::time((pjx + sx) - pix, (pjy + sy) - piy, vjx - vix, vjy - viy, di->r + dj->r,
-                                   ph.b_noise2);
+  const T vix = rules::velocity_along(di->vx, gx, di->t, now), viy = rules::velocity_along(di->vy, gy, di->t, now);
+  const T vjx = rules::velocity_along(dj->vx, gx, dj->t, now), vjy = rules::velocity_along(dj->vy, gy, dj->t, now);
+  return now + rules::v2::contact_time((pjx + sx) - pix, (pjy + sy) - piy, vjx - vix, vjy - viy, di->r + dj->r,
+                                       ph.b_noise2);
 }
 
-// Time disk i hits `wall`, from its record alone (predict_wall; predict_wall_accelerated at now = the
-// record's time).
-template <class T>
-inline T predict_wall_time(const EventPhysics<T>& ph, const Disk<T>& d, std::int32_t wall) {
+// Time a disk hits `wall`, from its record alone.
+template <class T, class R>
+inline T predict_wall_time(const EventPhysics<T>& ph, const R& d, std::int32_t wall) {
+  using rules::v2::reach;
+  constexpr T kNever = rules::v2::kNever<T>;
   if (ph.gx == T(0) && ph.gy == T(0)) {
     switch (wall) {
-      case kWallRight: return d.vx > 0 ? d.t + time_to_reach(d.x, d.vx, ph.lx - d.r) : kNever<T>;
-      case kWallLeft: return d.vx < 0 ? d.t + time_to_reach(d.x, d.vx, d.r) : kNever<T>;
-      case kWallTop: return d.vy > 0 ? d.t + time_to_reach(d.y, d.vy, ph.ly - d.r) : kNever<T>;
-      case kWallBottom: return d.vy < 0 ? d.t + time_to_reach(d.y, d.vy, d.r) : kNever<T>;
-      default: return kNever<T>;
+      case rules::kRight: return d.vx > 0 ? d.t + reach(d.x, d.vx, ph.lx - d.r) : kNever;
+      case rules::kLeft: return d.vx < 0 ? d.t + reach(d.x, d.vx, d.r) : kNever;
+      case rules::kTop: return d.vy > 0 ? d.t + reach(d.y, d.vy, ph.ly - d.r) : kNever;
+      case rules::kBottom: return d.vy < 0 ? d.t + reach(d.y, d.vy, d.r) : kNever;
+      default: return kNever;
     }
   }
-  T dt = kNever<T>;
+  T dt = kNever;
   switch (wall) {
-    case kWallLeft: dt = time_to_reach_accelerated(d.x - d.r, d.vx, ph.gx, T(0)); break;
-    case kWallRight: dt = time_to_reach_accelerated((ph.lx - d.r) - d.x, -d.vx, -ph.gx, T(0)); break;
-    case kWallBottom: dt = time_to_reach_accelerated(d.y - d.r, d.vy, ph.gy, T(0)); break;
-    case kWallTop: dt = time_to_reach_accelerated((ph.ly - d.r) - d.y, -d.vy, -ph.gy, T(0)); break;
+    case rules::kLeft: dt = rules::v2::reach_accelerated(d.x - d.r, d.vx, ph.gx); break;
+    case rules::kRight: dt = rules::v2::reach_accelerated((ph.lx - d.r) - d.x, -d.vx, -ph.gx); break;
+    case rules::kBottom: dt = rules::v2::reach_accelerated(d.y - d.r, d.vy, ph.gy); break;
+    case rules::kTop: dt = rules::v2::reach_accelerated((ph.ly - d.r) - d.y, -d.vy, -ph.gy); break;
     default: break;
   }
-  return dt == kNever<T> ? kNever<T> : d.t + dt;
+  return dt == kNever ? kNever : d.t + dt;
 }
 
-// Time disk i crosses the periodic edge `dir` (predict_crossing against the grid's outer sides, which are
-// exactly 0 and the box length).
-template <class T>
-inline T predict_wrap_time(const EventPhysics<T>& ph, const Disk<T>& d, std::int32_t dir) {
+// Time a disk crosses the periodic edge `dir`, from its record alone.
+template <class T, class R>
+inline T predict_wrap_time(const EventPhysics<T>& ph, const R& d, std::int32_t dir) {
+  using rules::v2::reach;
+  constexpr T kNever = rules::v2::kNever<T>;
   switch (dir) {
-    case kWrapRight: return d.vx > 0 ? d.t + time_to_reach(d.x, d.vx, ph.lx) : kNever<T>;
-    case kWrapLeft: return d.vx < 0 ? d.t + time_to_reach(d.x, d.vx, T(0)) : kNever<T>;
-    case kWrapTop: return d.vy > 0 ? d.t + time_to_reach(d.y, d.vy, ph.ly) : kNever<T>;
-    case kWrapBottom: return d.vy < 0 ? d.t + time_to_reach(d.y, d.vy, T(0)) : kNever<T>;
-    default: return kNever<T>;
+    case rules::kWrapRight: return d.vx > 0 ? d.t + reach(d.x, d.vx, ph.lx) : kNever;
+    case rules::kWrapLeft: return d.vx < 0 ? d.t + reach(d.x, d.vx, T(0)) : kNever;
+    case rules::kWrapTop: return d.vy > 0 ? d.t + reach(d.y, d.vy, ph.ly) : kNever;
+    case rules::kWrapBottom: return d.vy < 0 ? d.t + reach(d.y, d.vy, T(0)) : kNever;
+    default: return kNever;
+  }
+}
+
+// Time a disk hits segment s, from its record alone.
+template <class T, class R>
+inline T predict_segment_time(const EventPhysics<T>& ph, const R& d, std::int32_t s) {
+  constexpr T kNever = rules::v2::kNever<T>;
+  if (s < 0 || std::size_t(s) >= ph.segments.size()) return kNever;
+  const T dt = rules::v2::segment_contact_time(ph.segments[std::size_t(s)], d.x, d.y, d.vx, d.vy, d.r, ph.b_noise2);
+  return dt == kNever ? kNever : d.t + dt;
+}
+
+// Velocities after pair (i, j): `a` and `b` are their records brought to the event's time (rules::bring_to),
+// ci and cj what else the rule reads. Rough logs (`rough`): the tangential part too, from the velocities and
+// spins before the collision (skipped with the TC flag), and the spins after it in w[0], w[1].
+template <class T, class R>
+inline void predict_pair_velocities(const EventPhysics<T>& ph, const R& a, const R& b, const DiskTraits<T>& ci,
+                                    const DiskTraits<T>& cj, bool rough, bool tc_elastic, T v[4], T w[2]) {
+  T dx = b.x - a.x, dy = b.y - a.y;
+  if (ph.periodic) {
+    if (dx > ph.half_lx) dx -= ph.lx; else if (dx < -ph.half_lx) dx += ph.lx;
+    if (dy > ph.half_ly) dy -= ph.ly; else if (dy < -ph.half_ly) dy += ph.ly;
+  }
+  const T k = tc_elastic ? T(2) : ph.pair_one_plus_xi(ci.species, cj.species);
+  v[0] = a.vx, v[1] = a.vy, v[2] = b.vx, v[3] = b.vy;
+  rules::v2::pair_rule(dx, dy, ci.mass, cj.mass, k, v[0], v[1], v[2], v[3]);
+  if (!rough) return;
+  w[0] = ci.omega, w[1] = cj.omega;
+  const T k_b = tc_elastic ? T(0) : ph.pair_one_plus_beta(ci.species, cj.species);
+  rules::v2::pair_rule_tangential(dx, dy, b.vx - a.vx, b.vy - a.vy, ci.mass, cj.mass, a.r, b.r, ci.inertia,
+                                  cj.inertia, k_b, v[0], v[1], v[2], v[3], w[0], w[1]);
+}
+
+// Velocity after a disk with record d hits `wall` at time t; rough logs: the spin after it in *w.
+template <class T, class R>
+inline void predict_wall_velocity(const EventPhysics<T>& ph, const R& d, T t, std::int32_t wall,
+                                  const DiskTraits<T>& c, bool rough, bool tc_elastic, T v[2], T* w) {
+  v[0] = rules::velocity_along(d.vx, ph.gx, d.t, t), v[1] = rules::velocity_along(d.vy, ph.gy, d.t, t);
+  const T vx0 = v[0], vy0 = v[1];
+  rules::v2::wall_rule(wall, tc_elastic, ph.xi_wall[wall & 3], v[0], v[1]);
+  if (!rough) return;
+  *w = c.omega;
+  rules::v2::wall_rule_tangential(wall, vx0, vy0, c.mass, d.r, c.inertia, tc_elastic ? T(0) : ph.wall_one_plus_beta,
+                                  v[0], v[1], *w);
+}
+
+// Velocity after a disk with record d hits segment s at time t: a copy brought to t, then the segment's rule.
+template <class T, class R>
+inline void predict_segment_velocity(const EventPhysics<T>& ph, const R& d, T t, std::int32_t s, bool tc_elastic,
+                                     T v[2]) {
+  R at = d;
+  rules::bring_to(at, t, ph.gx, ph.gy);
+  v[0] = at.vx, v[1] = at.vy;
+  if (s < 0 || std::size_t(s) >= ph.segments.size()) return;  // a version 1 log's header lists no segments
+  const rules::v2::Segment<T>& g = ph.segments[std::size_t(s)];
+  rules::v2::segment_rule(g, at.x, at.y, tc_elastic ? T(2) : g.one_plus_xi, v[0], v[1]);
+}
+
+// The time a version 2 log predicts for an event from the records of its disks just before it (a of i, b of
+// j for a pair; +infinity: no prediction).
+template <class T, class R>
+inline T predicted_event_time(const EventPhysics<T>& ph, EventKind kind, const R& a, const R& b, std::int32_t j) {
+  switch (kind) {
+    case EventKind::Pair: return predict_pair_time(ph, a, b);
+    case EventKind::Wall: return predict_wall_time(ph, a, j);
+    case EventKind::Wrap: return predict_wrap_time(ph, a, j);
+    case EventKind::Segment: return predict_segment_time(ph, a, j);
+    default: return rules::v2::kNever<T>;
   }
 }
 

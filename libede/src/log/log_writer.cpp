@@ -2,12 +2,12 @@
 //
 // Chunk boundaries are a function of the event index alone (every chunk_events events, and at every
 // keyframe), so a resumed run cut at a keyframe writes exactly the chunks the uninterrupted run wrote.
-// The event loop only copies each event into the open chunk's buffer; the columns are coded on the record
-// writer's worker (Coder below), which keeps the replayed state that format version 2 predicts from
-// (log/coder_state.hpp: x, y, vx, vy, t a disk, not a copy of the engine's records). The
-// worker builds records in submission order, so the coder sees the events in order and the bytes are
-// those of coding on the loop. Rejected: coding on the event loop (measured: at N = 1e4, log format 2's
-// predictions and the replayed state's updates took the logging overhead from 8-14 % to 34 %).
+// The event loop only copies each event, with the records of its disks just before it, into the open chunk's
+// buffer (log/logged_event.hpp); the columns are coded on the record writer's worker (ChunkCoder below)
+// from those alone. The worker builds records in submission order, so the bytes are those of coding on the
+// loop. Rejected: coding on the event loop (measured: at N = 1e4, log format 2's predictions took the
+// logging overhead from 8-14 % to 34 % with a second core free), and a replayed copy of the state on the
+// worker (its cache misses were most of the log's cost when loop and worker share one core).
 #include "log/log_writer.hpp"
 #include "log/run_id.hpp"
 
@@ -16,10 +16,14 @@
 
 #include <algorithm>
 #include <cstring>
+#include <mutex>
 
 #include "core/build_info.hpp"
+#include "core/engine_revision.hpp"
+#include "core/energy.hpp"
 #include "log/chunk_codec.hpp"
-#include "log/coder_state.hpp"
+#include "log/event_coder.hpp"
+#include "log/logged_event.hpp"
 #include "ede_log.capnp.h"
 #include "log/log_framing.hpp"
 #include "log/flat_message.hpp"
@@ -99,9 +103,6 @@ std::vector<unsigned char> one_scalar(T v) {
 
 }  // namespace
 
-static_assert(LogSettings{}.keyframe_apart_above == RecordWriter::kTwoPassAbove,
-              "later keyframes are written apart from the coder's copy from the size records are written in pieces");
-
 std::uint64_t auto_keyframe_interval(std::size_t disks) {
   return std::max<std::uint64_t>(std::uint64_t(1) << 18, 4 * std::uint64_t(disks));
 }
@@ -112,25 +113,6 @@ LogSettings LogSettings::from(const LogSpec& spec) {
   if (spec.chunk_events) s.chunk_events = *spec.chunk_events;
   if (spec.compression_level) s.compression_level = *spec.compression_level;
   return s;
-}
-
-LogRunInfo LogRunInfo::from(const Scene& scene, const EngineOptions& options, const std::vector<std::string>& species) {
-  LogRunInfo r;
-  r.scene_name = scene_label(scene.source_name);  // not the directory: same scene, same bytes
-  r.scene_text = scene.source_text;
-  r.seed = scene.seed;
-  r.scalar = scene.scalar;
-  r.species_names = species;
-  r.lx = scene.lx;
-  r.ly = scene.ly;
-  r.boundary = options.boundary;
-  r.rebuild_interval = options.rebuild_interval;
-  r.tc_model = options.physics.tc > 0 && !options.physics.elastic();
-  r.gx = options.physics.gravity[0];
-  r.gy = options.physics.gravity[1];
-  r.set_restitution(options.physics);
-  r.rotation = uses_rotation(options);
-  return r;
 }
 
 // The engine's table (Engine::setup_restitution): every pair at xi, then the named pairs; an elastic engine
@@ -157,68 +139,19 @@ void LogRunInfo::set_restitution(const PhysicsSpec& physics) {
     segments.insert(segments.end(), {s.from[0], s.from[1], s.to[0], s.to[1], s.restitution});
 }
 
-// An event as the open chunk keeps it until the worker codes it: what every coder reads (56 bytes for
-// double, the engine's EventOutcome is 104); the spins after a rough run's event and the velocities before
-// it that format version 1 codes against go to ChunkEvents::extra only in the runs that need them. Up to
-// six chunks of 16 384 events are alive at once (the open one, four queued, the worker's), so this is
-// ~5 MB less at any N (docs/performance.md, "Memory at 10⁶ with the log").
-template <class T>
-struct LoggedEvent {
-  T time, vix, viy, vjx, vjy;
-  std::int32_t i, j;
-  EventKind kind;
-  bool tc_elastic;
-};
-
-template <class T>
-struct ChunkEvents {
-  std::vector<LoggedEvent<T>> events;
-  std::vector<T> extra;  // per event: wi, wj (rough runs), then vix0, viy0, vjx0, vjy0 (format version 1)
-  bool spins = false, before = false;
-
-  std::size_t size() const { return events.size(); }
-  bool empty() const { return events.empty(); }
-  void reserve(std::size_t n) {
-    events.reserve(n);
-    extra.reserve(n * ((spins ? 2 : 0) + (before ? 4 : 0)));
-  }
-  void push_back(const EventOutcome<T>& e) {
-    events.push_back({e.time, e.vix, e.viy, e.vjx, e.vjy, e.i, e.j, e.kind, e.tc_elastic});
-    if (spins) extra.insert(extra.end(), {e.wi, e.wj});
-    if (before) extra.insert(extra.end(), {e.vix0, e.viy0, e.vjx0, e.vjy0});
-  }
-  EventOutcome<T> operator[](std::size_t k) const {
-    const LoggedEvent<T>& l = events[k];
-    EventOutcome<T> e;
-    e.time = l.time, e.kind = l.kind, e.tc_elastic = l.tc_elastic, e.i = l.i, e.j = l.j;
-    e.vix = l.vix, e.viy = l.viy, e.vjx = l.vjx, e.vjy = l.vjy;
-    const T* x = extra.data() + k * ((spins ? 2 : 0) + (before ? 4 : 0));
-    if (spins) e.wi = x[0], e.wj = x[1], x += 2;
-    if (before) e.vix0 = x[0], e.viy0 = x[1], e.vjx0 = x[2], e.vjy0 = x[3];
-    return e;
-  }
-};
-
-// What codes the columns: the encoder and, for version 2, the state as replay will have it before each
-// event, kept by applying each event with the same function replay uses. Touched by the record writer's
-// worker only, once the first chunk is submitted.
+// What codes the columns on the record writer's worker: the encoder, from the events' values and their
+// predictions (made on the event loop, log/event_coder.hpp).
 template <class T>
 struct ChunkCoder {
-  EventPhysics<T> physics;
-  std::uint32_t format_version = 2;
-  // Version 2: what the predictors read, in 40 bytes a disk (log/coder_state.hpp). Version 1: nothing;
-  // its encoder reads the masses (`v1_mass`, empty in version 2).
-  CoderState<T> replayed;
-  std::vector<T> v1_mass;
-  ChunkEncoder<T> chunk{v1_mass, format_version, physics};
+  ChunkEncoder<T> chunk;
   std::uint32_t run_id = 0;  // the header's (log/run_id.hpp), repeated in every chunk
   bool rotation = false;     // rough run: chunks carry the spin column
 
-  explicit ChunkCoder(std::uint32_t version) : format_version(version) {}
+  ChunkCoder(std::uint32_t version, bool rough) : chunk(version, rough), rotation(rough) {}
 
   FlatMessage code(std::uint64_t first_event, const ChunkEvents<T>& events) {
     chunk.reset(first_event);
-    for (std::size_t k = 0; k < events.size(); ++k) add_event(events[k]);
+    events.for_each([&](const CodedEvent<T>& e) { chunk.add(e); });
     const ChunkColumns c = chunk.columns();
     FlatMessageBuilder message(root_words<logschema::Chunk>(rotation, kChunkWords, kChunkPointers) +
                               message_words_of(c.times.size()) + message_words_of(c.kinds.size()) +
@@ -238,16 +171,31 @@ struct ChunkCoder {
     if (rotation) set_data(b.initSpinResiduals(std::uint32_t(c.spins.size())), c.spins);
     return message.finish();
   }
+};
 
-  void add_event(const EventOutcome<T>& e) {
-    chunk.add(e, replayed);
-    if (format_version < 2) return;
-    DecodedEvent<T> d;
-    d.time = e.time, d.kind = e.kind, d.i = e.i, d.j = e.j;
-    d.vix = e.vix, d.viy = e.viy, d.vjx = e.vjx, d.vjy = e.vjy;
-    d.wi = e.wi, d.wj = e.wj;
-    apply_event(d, replayed, physics.lx, physics.ly);
+// Chunk buffers handed back by the worker once coded, for the event loop to fill again: a new 16 384-event
+// buffer for every chunk meant fresh pages for every chunk (measured: ~6 % of a run at N = 10^4 in page
+// faults, with loop and worker on one core).
+template <class T>
+class ChunkPool {
+ public:
+  ChunkEvents<T> take(bool rough, bool format_v1) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (spare_.empty()) return ChunkEvents<T>(rough, format_v1);
+    ChunkEvents<T> c = std::move(spare_.back());
+    spare_.pop_back();
+    return c;
   }
+  void give(ChunkEvents<T>&& c) {
+    c.clear();
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (spare_.size() < kKept) spare_.push_back(std::move(c));
+  }
+
+ private:
+  static constexpr std::size_t kKept = 2;
+  std::mutex mutex_;
+  std::vector<ChunkEvents<T>> spare_;
 };
 
 template <class T>
@@ -255,10 +203,12 @@ struct LogWriter<T>::Impl {
   LogRunInfo run;
   LogSettings settings;
   RecordWriter out;
-  ChunkCoder<T> coder{settings.format_version};  // the worker's, once set up (coder_ready, state_ready)
-  bool coder_ready = false, state_ready = false;
-  std::vector<Disk<T>> resume_disks;
-  std::vector<T> resume_omega;
+  // The header's physics, for the predictions made on the event loop (event_coder) and the header itself.
+  EventPhysics<T> physics;
+  EventCoder<T> event_coder{physics, settings.format_version, settings.check_exactness, run.engine_constants};
+  ChunkCoder<T> coder{settings.format_version, run.rotation};  // the worker's
+  ChunkPool<T> pool;
+  bool coder_ready = false;
   // The open chunk, on the event loop: its events as the engine reported them.
   ChunkEvents<T> chunk_events;
   std::uint64_t chunk_first = 0;
@@ -278,24 +228,16 @@ struct LogWriter<T>::Impl {
   // The worker may still be coding a chunk: stop it before the coder goes.
   ~Impl() { out.finish(); }
 
-  // What needs the disks: the masses and physics (predictions), the replayed state before the first event
-  // (the initial state, or a resumed run's keyframe records), and the automatic keyframe interval. Runs on
-  // the event loop before the first chunk is submitted, so before the worker touches the coder. The
-  // replayed state (`with_state`) is copied after the header is written (on_start): the header's run id
-  // makes transient copies of the header (run_id.cpp), which then do not coincide with this copy.
-  void ensure_coder(const Particles<T>& p, bool with_state = true) {
+  // What needs the disks: the physics (predictions), whether masses and species differ between disks, and
+  // the automatic keyframe interval. Runs on the event loop before the first chunk is submitted, so before
+  // the worker touches the coder.
+  void ensure_coder(const Particles<T>& p) {
     if (settings.keyframe_interval == 0) settings.keyframe_interval = auto_keyframe_interval(p.size());
     if (!coder_ready) setup_coder(p);
-    if (with_state && !state_ready) {
-      state_ready = true;
-      copy_state(p);
-    }
   }
 
-  void setup_coder(const Particles<T>& p) {
+  void setup_coder(const Particles<T>&) {
     coder_ready = true;
-    if (settings.format_version < 2) coder.v1_mass = p.mass_column();
-    EventPhysics<T>& physics = coder.physics;
     physics = EventPhysics<T>::box(run.lx, run.ly, run.boundary == BoundaryKind::Periodic, T(run.gx), T(run.gy));
     physics.species = std::max<std::size_t>(run.species_names.size(), 1);
     physics.one_plus_xi.clear();
@@ -304,10 +246,10 @@ struct LogWriter<T>::Impl {
     for (int w = 0; w < 4; ++w) physics.xi_wall[w] = T(run.wall_restitution[w]);
     for (std::size_t k = 0; k + 5 <= run.segments.size(); k += 5) {
       const double* g = &run.segments[k];
-      physics.segments.push_back(make_segment(T(g[0]), T(g[1]), T(g[2]), T(g[3]), T(g[4])));
+      physics.segments.push_back(rules::v2::make_segment(T(g[0]), T(g[1]), T(g[2]), T(g[3]), T(g[4])));
     }
     physics.tc_model = run.tc_model;
-    coder.rotation = run.rotation;
+    physics.rough = run.rotation;
     if (run.rotation) {
       physics.one_plus_beta.clear();
       for (const double b : run.pair_roughness) physics.one_plus_beta.push_back(T(1) + T(b));
@@ -315,18 +257,6 @@ struct LogWriter<T>::Impl {
                                    physics.one_plus_beta.empty() ? T(0) : physics.one_plus_beta[0]);
       physics.wall_one_plus_beta = T(1) + T(run.wall_roughness);
     }
-  }
-
-  void copy_state(const Particles<T>& p) {
-    if (settings.format_version < 2) return;
-    coder.replayed.assign(p);
-    if (!resume_omega.empty()) coder.replayed.omega = resume_omega;
-    resume_omega.clear();
-    for (std::size_t i = 0; i < resume_disks.size() && i < coder.replayed.size(); ++i) {
-      const Disk<T>& from = resume_disks[i];
-      coder.replayed.motion[i] = {from.x, from.y, from.vx, from.vy, from.t};
-    }
-    resume_disks.clear();
   }
 
   // Words of the header's message: texts and the small tables are a guess (a short one only costs a copy);
@@ -366,7 +296,7 @@ struct LogWriter<T>::Impl {
   // Every field of the header but the run id; `for_id`: the engine version, compiler and flags empty.
   void fill_header(logschema::Header::Builder h, const Particles<T>& p, bool for_id) {
     const std::size_t n = p.size();
-    h.setEngineVersion(for_id ? std::string() : run.engine_version.empty() ? std::string(EDE_VERSION) : run.engine_version);
+    h.setEngineVersion(for_id ? std::string() : run.engine_version.empty() ? engine_version_text() : run.engine_version);
     h.setCompiler(for_id ? std::string() : run.compiler.empty() ? build_compiler() : run.compiler);
     h.setCompileFlags(for_id ? std::string() : run.compile_flags.empty() ? build_flags() : run.compile_flags);
     h.setScalar(schema_scalar<T>());
@@ -392,7 +322,6 @@ struct LogWriter<T>::Impl {
     h.setGravityX(run.gx);
     h.setGravityY(run.gy);
     if (settings.format_version >= 2) {
-      const EventPhysics<T>& physics = coder.physics;  // set up at on_start, before any chunk is submitted
       set_data(h.initPairOnePlusXi(std::uint32_t(physics.one_plus_xi.size() * kScalarWidth<T>)),
                raw_scalars(physics.one_plus_xi));
       std::vector<T> walls(physics.xi_wall, physics.xi_wall + 4);
@@ -414,42 +343,27 @@ struct LogWriter<T>::Impl {
     rh.kind = logfmt::RecordKind::Chunk;
     rh.first_event = chunk_first;
     rh.event_count = chunk_events.size();
-    rh.time_first = double(chunk_events.events.front().time);
-    rh.time_last = double(chunk_events.events.back().time);
-    const std::size_t seq = out.submit_built(
-        rh, [coder = &coder, first = chunk_first, events = std::move(chunk_events)] { return coder->code(first, events); });
+    rh.time_first = double(chunk_events.time_first());
+    rh.time_last = double(chunk_events.time_last());
+    const std::size_t seq = out.submit_built(rh, [coder = &coder, pool = &pool, first = chunk_first,
+                                                  events = std::move(chunk_events)]() mutable {
+      FlatMessage m = coder->code(first, events);
+      pool->give(std::move(events));
+      return m;
+    });
     pending.push_back({seq, {std::uint8_t(logfmt::RecordKind::Chunk), 0, rh.first_event, rh.event_count,
                              rh.time_first, rh.time_last, false}});
-    chunk_events = {{}, {}, run.rotation, settings.format_version < 2};
+    chunk_events = pool.take(run.rotation, settings.format_version < 2);
     chunk_events.reserve(settings.chunk_events);
     chunk_first = logged;
   }
 
-  // Bytes of a keyframe's five per-disk state columns (x, y, vx, vy, t): what makes a keyframe "large".
-  static std::size_t state_column_bytes(const Particles<T>& p) { return p.size() * 5 * kScalarWidth<T>; }
-
-  // Every keyframe after the coder's copy exists. A large one is written apart from that copy: the worker
-  // first codes every chunk before it, the copy (40 B/disk) is dropped, the keyframe's message (44 B/disk)
-  // is built, written and freed, and the copy is made again from the engine's state, which is the state
-  // replay has here (the engine's records change only by logged events, as replay's do; a keyframe holds
-  // them). With both alive a run of 7e6 events at N = 10^6 peaked at 213 B/disk, against the 186.5 of a
-  // run with no keyframe after the first (docs/performance.md, "Later keyframes"). The event loop waits
-  // for the keyframe's compression, part of which it waited for anyway once the record writer's queue was
-  // full; the chunks' bytes are the same either way.
-
-  void write_later_keyframe(const Particles<T>& p, T time, const RebuildPoint<T>* rebuild) {
-    const bool apart = settings.format_version >= 2 && state_column_bytes(p) > settings.keyframe_apart_above;
-    if (!apart) return write_keyframe(p, time, rebuild);
-    flush_chunk();
-    out.flush();  // the worker is idle, every chunk before this keyframe coded with the copy
-    coder.replayed = CoderState<T>{};
-    write_keyframe(p, time, rebuild);
-    out.flush();  // the keyframe's message written and freed
-    copy_state(p);
-  }
-
+  // A large keyframe (its state columns above the record writer's two-pass size) is built once everything
+  // before it is written and freed (the header's message, the chunks queued), so that its message is the
+  // largest thing alive next to the engine (docs/performance.md, "Memory at 10⁶ with the log").
   void write_keyframe(const Particles<T>& p, T time, const RebuildPoint<T>* rebuild) {
     flush_chunk();
+    if (p.size() * 5 * kScalarWidth<T> > RecordWriter::kTwoPassAbove) out.flush();
     const std::size_t n = p.size();
     FlatMessageBuilder message(keyframe_words(n, rebuild));
     auto k = init_record<logschema::Keyframe>(message, run.rotation, kKeyframeWords, kKeyframePointers);
@@ -553,14 +467,10 @@ struct LogWriter<T>::Impl {
 template <class T>
 Result<std::unique_ptr<LogWriter<T>>> LogWriter<T>::create(const std::string& path, const LogRunInfo& run,
                                                            const LogSettings& settings,
-                                                           const LogContinuation* continuation,
-                                                           const std::vector<Disk<T>>* resume_disks,
-                                                           const std::vector<T>* resume_omega) {
+                                                           const LogContinuation* continuation) {
   if (settings.chunk_events == 0) return Error{"log settings: chunk_events must be positive"};
   if (settings.format_version < logfmt::kOldestFormatVersion || settings.format_version > logfmt::kFormatVersion)
     return Error{"log settings: format version " + std::to_string(settings.format_version) + " is not one this ede writes"};
-  if (continuation && settings.format_version >= 2 && !resume_disks)
-    return Error{"continuing a version 2 log needs the state at its resumable keyframe"};
   const std::uint64_t start = continuation ? continuation->cut_offset : 0;
   auto impl = std::make_unique<Impl>(path, run, settings, start, settings.compression_level);
   if (std::string e = impl->out.error(); !e.empty()) return Error{e};
@@ -573,13 +483,10 @@ Result<std::unique_ptr<LogWriter<T>>> LogWriter<T>::create(const std::string& pa
     logfmt::encode_file_header(header.data(), settings.format_version);
     impl->out.write_raw(std::move(header));
   }
-  if (resume_disks) impl->resume_disks = *resume_disks;
-  if (resume_omega) impl->resume_omega = *resume_omega;
   if (run.rotation && settings.format_version < 2)
     return Error{"log settings: a run of rough (rotating) disks is written in format version 2 only"};
   impl->chunk_first = impl->logged;
-  impl->chunk_events.spins = run.rotation;
-  impl->chunk_events.before = settings.format_version < 2;
+  impl->chunk_events = ChunkEvents<T>(run.rotation, settings.format_version < 2);
   impl->chunk_events.reserve(settings.chunk_events);
   return std::unique_ptr<LogWriter<T>>(new LogWriter<T>(std::move(impl)));
 }
@@ -590,13 +497,9 @@ LogWriter<T>::LogWriter(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 template <class T>
 LogWriter<T>::~LogWriter() = default;
 
-// The coder's copy of the state is taken at the first keyframe (the engine's rebuild right after on_start,
-// before any event), once that keyframe is written if it is large: so the keyframe's message (44 B/disk)
-// and the copy (40 B/disk) are never alive together (docs/performance.md, "Memory at 10⁶ with the log"); later
-// keyframes see write_later_keyframe. A run whose engine sends no rebuild first (resumed) copies at its first event.
 template <class T>
 void LogWriter<T>::on_start(T, const Particles<T>& p) {
-  impl_->ensure_coder(p, false);
+  impl_->ensure_coder(p);
   impl_->write_header(p);
 }
 
@@ -605,24 +508,17 @@ void LogWriter<T>::on_event(const EventOutcome<T>& e, const Particles<T>& p) {
   if (e.kind == EventKind::Cell) return;
   Impl& w = *impl_;
   w.ensure_coder(p);
-  w.chunk_events.push_back(e);
+  w.chunk_events.push_back(w.event_coder.code(e, p));
   ++w.logged;
   if (w.chunk_events.size() >= w.settings.chunk_events) w.flush_chunk();
-  if (w.logged % w.settings.keyframe_interval == 0) w.write_later_keyframe(p, e.time, nullptr);
+  if (w.logged % w.settings.keyframe_interval == 0) w.write_keyframe(p, e.time, nullptr);
 }
 
 template <class T>
 void LogWriter<T>::on_rebuild(const RebuildPoint<T>& point) {
   Impl& w = *impl_;
-  w.ensure_coder(point.particles, false);
-  // The first keyframe, when large: the header is written (and freed) before it is built, and it before
-  // the coder's copy is made, so no two of the three are alive at once.
-  const bool first_large = !w.state_ready && Impl::state_column_bytes(point.particles) > RecordWriter::kTwoPassAbove;
-  if (first_large) w.out.flush();
-  if (w.state_ready) return w.write_later_keyframe(point.particles, point.time, &point);
-  w.write_keyframe(point.particles, point.time, &point);
-  if (first_large) w.out.flush();
   w.ensure_coder(point.particles);
+  w.write_keyframe(point.particles, point.time, &point);
 }
 
 template <class T>
@@ -637,6 +533,7 @@ void LogWriter<T>::on_finish(T time, const Particles<T>&, RunStatus status) {
 
 template <class T>
 std::string LogWriter<T>::error() const {
+  if (const std::string& m = impl_->event_coder.mismatch(); !m.empty()) return impl_->out.path() + ": " + m;
   return impl_->out.error();
 }
 

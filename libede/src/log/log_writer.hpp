@@ -12,11 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "engine/engine.hpp"
 #include "ede/error.hpp"
 #include "ede/scene.hpp"
 #include "log/log_reader.hpp"
-#include "engine/sink.hpp"
+#include "core/sink.hpp"
 
 namespace ede {
 
@@ -31,12 +30,9 @@ struct LogSettings {
   std::uint32_t chunk_events = 16384;          // events per chunk
   int compression_level = 3;                   // zstd level (docs/log-format-choices in docs/performance.md)
   std::uint32_t format_version = 2;            // 2 (predicted columns), or 1 (for ede-replay convert and comparisons)
-  // A keyframe after the first whose state columns exceed this many bytes is written while the coder's copy
-  // of the state is dropped (made again from the engine's state after it): the two are never alive together.
-  // Changes memory and timing, never the bytes (tests set 0 to take that path at any size). The default is
-  // the record writer's two-pass size (RecordWriter::kTwoPassAbove), from which a keyframe's message is the
-  // largest thing alive.
-  std::size_t keyframe_apart_above = std::size_t(8) << 20;
+  // Recompute every prediction the engine vouched for (EventOutcome::v2_*_exact) and fail the log at the
+  // first that differs (error()): slower; the tests, and a scene's log.check_exactness.
+  bool check_exactness = false;
   static LogSettings from(const LogSpec& spec);
 };
 
@@ -64,9 +60,13 @@ struct LogRunInfo {
   std::vector<double> pair_roughness{-1};
   double wall_roughness = -1;
   std::string engine_version, compiler, compile_flags;  // empty: this build's (a converted log keeps its own)
+  // The box, restitution, roughness and segments above are the ones the engine runs with (log_run_info,
+  // run/log_run_info.hpp): only then does the writer take the engine's word for what it computed exactly as
+  // the format predicts (EventOutcome::v2_*_exact); else it predicts every event itself (the same bytes
+  // when the header is right, a larger but exact log when it is not).
+  bool engine_constants = false;
   // pair_restitution, wall_restitution and segments from the scene's physics, as the engine builds them.
   void set_restitution(const PhysicsSpec& physics);
-  static LogRunInfo from(const Scene& scene, const EngineOptions& options, const std::vector<std::string>& species);
 };
 
 // Where an interrupted log continues (from LogReader::resume_point).
@@ -90,15 +90,11 @@ LogContinuation continuation_from(const LogReader& log, std::size_t keyframe);
 template <class T>
 class LogWriter final : public Sink<T> {
  public:
-  // A new log at `path`, or, with `continuation`, the continuation of an interrupted one; a version 2 log
-  // then also needs the disks' records at the resumable keyframe (`resume_disks`: x, y, vx, vy, t), since
-  // its columns are coded against the replayed state and a resumed engine reports no state before its
-  // first event.
+  // A new log at `path`, or, with `continuation`, the continuation of an interrupted one (the events carry
+  // the records the predictors read, so a continued log needs no state of its own).
   static Result<std::unique_ptr<LogWriter>> create(const std::string& path, const LogRunInfo& run,
                                                    const LogSettings& settings,
-                                                   const LogContinuation* continuation = nullptr,
-                                                   const std::vector<Disk<T>>* resume_disks = nullptr,
-                                                   const std::vector<T>* resume_omega = nullptr);
+                                                   const LogContinuation* continuation = nullptr);
   ~LogWriter() override;
 
   void on_start(T time, const Particles<T>& particles) override;

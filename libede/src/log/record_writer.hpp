@@ -69,6 +69,7 @@ class RecordWriter {
   // Flushes, closes, and returns the first error, if any.
   std::string finish();
   std::string error();
+  const std::string& path() const { return path_; }
 
  private:
   struct Job {

@@ -14,6 +14,8 @@
 //    runs until they meet again, and chunk comparison resumes.
 // `full` skips step 2 and starts at event 0: every record is read (a damaged one is an error), still
 // without replaying identical chunks.
+#include "core/engine_revision.hpp"
+
 #include <algorithm>
 #include <cstring>
 #include <map>
@@ -78,6 +80,11 @@ void print_notes(const LogHeaderInfo& a, const LogHeaderInfo& b, std::string& te
   note("scene names", a.scene_name, b.scene_name);
   note("seeds", std::to_string(a.seed), std::to_string(b.seed));
   note("engine versions", a.engine_version, b.engine_version);
+  if (trajectory_revision_of(a.engine_version) != trajectory_revision_of(b.engine_version))
+    text += "note: A and B were written by different engine revisions (" + std::to_string(trajectory_revision_of(a.engine_version)) +
+            " and " + std::to_string(trajectory_revision_of(b.engine_version)) +
+            "): a later revision may take another trajectory for the same scene (CHANGELOG.md), so a difference "
+            "from the first events on is expected, not a fault of either log\n";
   note("compilers", a.compiler, b.compiler);
   note("compile flags", a.compile_flags, b.compile_flags);
   note("boundaries", to_string(a.boundary), to_string(b.boundary));

@@ -80,12 +80,20 @@ Status convert_as(const std::shared_ptr<const LogReader>& log, const std::string
 
   writer.on_start(replay.time(), replay.particles());
   if (Status s = rebuilds_at(0); !s) return s;
+  // The records just before each event, which the writer codes against: the replayed state's, kept one
+  // event behind (an event changes the records of its disks, an action every record).
+  std::vector<Disk<T>> before = replay.particles().disk;
   for (std::uint64_t n = 0; n < log->total_events(); ++n) {
     auto e = replay.next_event();
     if (!e) return e.error();
     const ReplayedEvent<T>& r = e.value();
     EventOutcome<T> out{r.time, r.kind, false, r.i, r.j, r.vix, r.viy, r.vjx, r.vjy,
-                        r.vix0, r.viy0, r.vjx0, r.vjy0, r.wi, r.wj};
+                        r.vix0, r.viy0, r.vjx0, r.vjy0, r.wi, r.wj, r.wi0, r.wj0};
+    const std::vector<Disk<T>>& now = replay.particles().disk;
+    if (r.i >= 0) out.before_i = record_before(before[std::size_t(r.i)]), before[std::size_t(r.i)] = now[std::size_t(r.i)];
+    if (r.kind == EventKind::Pair)
+      out.before_j = record_before(before[std::size_t(r.j)]), before[std::size_t(r.j)] = now[std::size_t(r.j)];
+    if (r.kind == EventKind::Action) before = now;
     writer.on_event(out, replay.particles());
     if (Status s = rebuilds_at(n + 1); !s) return s;
   }

@@ -165,7 +165,7 @@ Result<std::unique_ptr<Replay<T>>> Replay<T>::create(std::shared_ptr<const LogRe
     for (std::size_t k = 4; k + 5 <= walls.size(); k += 5) {
       const T* g = &walls[k];
       if (g[0] == g[2] && g[1] == g[3]) return Error{log->path() + ": the header lists a wall segment of zero length"};
-      r->physics_.segments.push_back(make_segment(g[0], g[1], g[2], g[3], g[4]));
+      r->physics_.segments.push_back(rules::v2::make_segment(g[0], g[1], g[2], g[3], g[4]));
     }
   }
   if (h.rotation()) {
@@ -175,6 +175,7 @@ Result<std::unique_ptr<Replay<T>>> Replay<T>::create(std::shared_ptr<const LogRe
         !read_raw_scalars(h.one_plus_beta, s * s + 4, beta))
       return Error{log->path() + ": the header's rotation data (inertia, 1 + beta) is malformed"};
     r->state_.omega.assign(n, T(0));
+    r->physics_.rough = true;
     r->physics_.one_plus_beta.assign(beta.begin(), beta.begin() + std::ptrdiff_t(s * s));
     r->physics_.wall_one_plus_beta = beta[s * s];
   }

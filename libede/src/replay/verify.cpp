@@ -13,6 +13,7 @@
 
 #include "core/scalar_dispatch.hpp"
 #include "ede/log.hpp"
+#include "core/engine_revision.hpp"
 #include "engine/engine.hpp"
 #include "replay/event_compare.hpp"
 #include "replay/log_impl.hpp"
@@ -306,9 +307,12 @@ Result<VerifyReport> verify_in(const std::shared_ptr<LogReader>& log, const Reru
                                 std::to_string(cmp.resumable_checked()) + " resumable) match the re-run's state";
   if (!cmp.unreadable().empty())
     return Error{cmp.unreadable() + " (the " + events + " before it are identical)", ErrorKind::Corrupt};
+  // A log of another engine revision may take another trajectory: a difference is then expected, and said so.
+  const std::string revision = revision_note(log->header().engine_version);
   const auto different = [&](const std::string& what, const std::string& identical_part) {
     r.difference = what;
     r.text = "DIFFERENT: " + what + "\n(" + identical_part + ")\n";
+    if (!revision.empty()) r.text += "note: " + revision + "\n";
     return r;
   };
   if (!cmp.difference().empty()) return different(cmp.difference(), "the " + events + " before it are identical");

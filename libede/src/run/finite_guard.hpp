@@ -16,7 +16,7 @@
 #include <sstream>
 #include <string>
 
-#include "engine/sink.hpp"
+#include "core/sink.hpp"
 
 namespace ede {
 

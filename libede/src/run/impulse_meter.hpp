@@ -15,7 +15,7 @@
 #include <cstdint>
 
 #include "ede/simulation.hpp"
-#include "engine/sink.hpp"
+#include "core/sink.hpp"
 
 namespace ede {
 

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <limits>
 
+#include "run/log_run_info.hpp"
 #include "core/state_csv.hpp"
 #include "core/state_of.hpp"
 #include "run/finite_guard.hpp"
@@ -224,10 +225,9 @@ Result<std::unique_ptr<Simulation::Impl>> make_in(RunSetup setup, const Simulati
     if (!log_path.empty()) {
       LogSettings settings = LogSettings::from(setup.scene.log);
       if (setup.resumed_log) settings.format_version = setup.resumed_log->header().format_version;  // continue as written
-      auto w = LogWriter<T>::create(log_path, LogRunInfo::from(setup.scene, setup.options, setup.initial.species_names),
-                                    settings, resumption ? &resumption->continuation : nullptr,
-                                    resumption ? &resumption->point.disks : nullptr,
-                                    resumption ? &resumption->point.omega : nullptr);
+      settings.check_exactness = options.check_exactness;
+      auto w = LogWriter<T>::create(log_path, log_run_info(setup.scene, setup.options, setup.initial.species_names),
+                                    settings, resumption ? &resumption->continuation : nullptr);
       if (!w) return Error{w.error().message, ErrorKind::Io};
       log = std::move(w).value();
     }

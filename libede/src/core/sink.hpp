@@ -1,4 +1,5 @@
-// Sinks: read-only observers of a run (log writer, live counters, progress, samplers).
+// Sinks: read-only observers of a run (log writer, live counters, progress, samplers). The interface lives on
+// the ground floor so that the log writer (log/) can be one without including the engine.
 //
 // The engine calls every registered sink in registration order; sinks get const access and cannot change
 // the run, so a run with sinks and one without produce the same events. One virtual call per event per
