@@ -21,11 +21,12 @@ for tool in ede-sim ede-replay ede-stats ede-crater ede-render ede-sweep ede-ben
 done
 [ "$tools" -ge 8 ] || fail "only $tools tools built"
 
-# A log's header: ede-replay info's "engine" line names the version that wrote it.
+# A log's header: ede-replay info's "engine" line names the version that wrote it and its trajectory
+# revision ("0.1.0+t1", libede/src/core/engine_revision.hpp).
 printf 'seed = 1\n[[species]]\nname = "a"\ncount = 2\nradius = 0.1\n[species.placement]\nkind = "explicit"\npositions = [[0.3, 0.5], [0.7, 0.5]]\n[species.velocity]\nkind = "list"\nvalues = [[1.0, 0.0], [-1.0, 0.0]]\n[stop]\ntime = 1\n' \
   >"$work/two.toml"
 "$build/tools/ede-sim" "$work/two.toml" -q -o "$work/two.ede" >/dev/null
-"$build/tools/ede-replay" info "$work/two.ede" | grep -q "^engine *ede $version," ||
+"$build/tools/ede-replay" info "$work/two.ede" | grep -q "^engine *ede $version+t[0-9][0-9]*," ||
   fail "the log header does not record ede $version: $("$build/tools/ede-replay" info "$work/two.ede" | grep engine)"
 
 grep -q "^Version: $version\$" "$build/ede.pc" || fail "ede.pc: $(grep ^Version "$build/ede.pc")"

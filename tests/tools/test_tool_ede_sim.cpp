@@ -181,7 +181,7 @@ TEST_CASE("ede-sim rejects bad input with a clear message and a non-zero exit", 
 }
 
 TEST_CASE("ede-sim on Ctrl-C: summary so far, what the log kept, how to resume, and the resume completes it exactly",
-          "[tool][ede-sim][resume]") {
+          "[tool][ede-sim][resume][slow]") {
   // 4000 disks for 6 M events (seconds): SIGINT arrives once the log holds a resumable keyframe.
   const std::string scene = temp_path("sigint.toml");
   std::ofstream(scene) << "seed = 2\n[box]\nsize = [1.0, 1.0]\nboundary = \"periodic\"\n[engine]\nrebuild_interval = "
