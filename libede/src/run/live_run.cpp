@@ -12,6 +12,7 @@
 #include <mutex>
 #include <thread>
 
+#include "core/seconds_since.hpp"
 #include "ede/number_text.hpp"
 #include "run/live_schedule.hpp"
 
@@ -50,8 +51,6 @@ SimulationOptions log_options(const std::string& path) {
   o.impulses = true;  // a live view's pressure monitor
   return o;
 }
-
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 }  // namespace
 

@@ -3,6 +3,7 @@
 
 #include <chrono>
 
+#include "core/seconds_since.hpp"
 #include "log/log_reader.hpp"
 #include "run/run_resume.hpp"
 #include "run/simulation_impl.hpp"
@@ -15,14 +16,6 @@ Simulation& Simulation::operator=(Simulation&&) noexcept = default;
 Simulation::~Simulation() {
   if (impl_) (void)close();
 }
-
-namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-}  // namespace
 
 // setup_seconds covers placement too (plan_run), not only the engine and the log writer.
 Result<Simulation> Simulation::create(const Scene& scene, const SimulationOptions& options) {

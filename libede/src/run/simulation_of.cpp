@@ -10,6 +10,7 @@
 #include <cstring>
 #include <limits>
 
+#include "core/seconds_since.hpp"
 #include "core/state_csv.hpp"
 #include "core/state_of.hpp"
 #include "run/finite_guard.hpp"
@@ -22,10 +23,6 @@
 namespace ede {
 
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // Events per slice: interrupt() is noticed within a slice (~50 ms at 1 M events/s), and progress is
 // reported every kSlicesPerProgress slices.
