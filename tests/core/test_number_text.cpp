@@ -1,4 +1,4 @@
-// core/number_text.hpp writes numbers with std::to_chars and must give, byte for byte, what printf's %.*g
+// ede/number_text.hpp writes numbers with std::to_chars and must give, byte for byte, what printf's %.*g
 // gave (every CSV ede wrote before used it, and CSVs are compared byte for byte): checked on special values
 // and on many random bit patterns of each type, whatever they mean as numbers.
 #include <algorithm>

@@ -4,7 +4,8 @@
 #   1. A library room includes only rooms on its own floor or below: core, scene, setup, engine, log,
 #      replay, run, analysis (and the public headers, ede/).
 #   2. replay/ reads logs and never runs the engine: it includes nothing from engine/ or setup/ (the re-run
-#      that verify needs is in run/).
+#      that verify needs is in run/). log/ is the format and owns its arithmetic (log/rules/): it includes
+#      nothing from engine/ either, though the engine is a floor below (the sink it implements is core's).
 #   3. study/ and the benchmarks (tools/ede_bench, tools/ede_bench_elastic) reach the library's inside only
 #      through the internal tier, ede/internal/: no include names a folder of libede/src.
 #   4. Every other tool and the Python module use the public headers alone: no libede/src folder, no
@@ -40,7 +41,7 @@ endmacro()
 # Rules 1 and 2.
 foreach(room IN LISTS rooms)
   list(FIND rooms ${room} floor)
-  file(GLOB files ${SOURCE_DIR}/libede/src/${room}/*.hpp ${SOURCE_DIR}/libede/src/${room}/*.cpp)
+  file(GLOB_RECURSE files ${SOURCE_DIR}/libede/src/${room}/*.hpp ${SOURCE_DIR}/libede/src/${room}/*.cpp)
   foreach(file IN LISTS files)
     quoted_includes(${file} paths)
     foreach(path IN LISTS paths)
@@ -54,6 +55,9 @@ foreach(room IN LISTS rooms)
       endif()
       if(room STREQUAL "replay" AND target MATCHES "^(engine|setup)$")
         fail(${file} "includes \"${path}\": replay/ never runs the engine (a re-run belongs in run/)")
+      endif()
+      if(room STREQUAL "log" AND target STREQUAL "engine")
+        fail(${file} "includes \"${path}\": log/ includes nothing of the engine (the format's arithmetic is log/rules/)")
       endif()
     endforeach()
   endforeach()

@@ -2,7 +2,7 @@
 //
 // Exact text uses the digits that round-trip each type (float 9, double 17, long double 21 significant
 // digits) in %g form, the format every CSV of ede has used, so old and new outputs compare equal; it is
-// written by core/number_text.hpp (std::to_chars), like every number libede prints.
+// written by ede/number_text.hpp (std::to_chars), like every number libede prints.
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
