@@ -53,7 +53,9 @@ Status run_plot_script(const std::string& script, const std::vector<std::string>
   }
   if (path.empty()) return Error{"plotting script not found: " + tried};
   const bool debian = ::access("/usr/bin/python3", X_OK) == 0;
-  SpawnRequest request{{debian ? "/usr/bin/python3" : "python3", path}, !debian, ""};
+  SpawnRequest request;
+  request.argv = {debian ? "/usr/bin/python3" : "python3", path};
+  request.search_path = !debian;
   request.argv.insert(request.argv.end(), args.begin(), args.end());
   auto run = run_program(request);
   if (!run) return run.error();

@@ -24,6 +24,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <utility>
 
 #include "replay_tool.hpp"
 #include "process.hpp"
@@ -138,7 +139,10 @@ int export_gsd(const Log& log, const std::vector<Time>& times, const std::string
                                    "ede.export_gsd(ede.open(sys.argv[2]), sys.argv[3], sys.argv[4:])\n",
                                    build_tree_python_dir(), log.info().path, path};
   for (const Time t : times) argv.push_back(exact(log, t));
-  auto run = tools::run_program({argv, !debian, ""});
+  tools::SpawnRequest request;
+  request.argv = std::move(argv);
+  request.search_path = !debian;
+  auto run = tools::run_program(request);
   if (!run) return fail(run.error().message);
   if (run.value().exit_status != 0) {
     const std::string& err = run.value().err;
