@@ -1,8 +1,10 @@
 // Log::Impl: what a public Log holds, for the library's own code (analysis functions reach the reader
 // through it). A Log is a LogReader plus one cached Replay per scalar type, so successive seeks of the
-// same Log continue from where the last one stopped instead of starting at a keyframe again.
+// same Log continue from where the last one stopped instead of starting at a keyframe again. Every replay
+// a Log's calls make asks `interrupted` before each chunk (Log::set_interrupt_check).
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <variant>
 
@@ -15,6 +17,7 @@ namespace ede {
 struct Log::Impl {
   std::shared_ptr<LogReader> reader;
   LogInfo info;
+  std::function<bool()> interrupted;
   mutable std::variant<std::monostate, std::unique_ptr<Replay<float>>, std::unique_ptr<Replay<double>>,
                        std::unique_ptr<Replay<long double>>>
       replay;
@@ -26,6 +29,7 @@ struct Log::Impl {
     auto made = Replay<T>::create(reader);
     if (!made) return made.error();
     Replay<T>* p = made.value().get();
+    p->set_interrupt_check(&interrupted);
     replay = std::move(made).value();
     return p;
   }
