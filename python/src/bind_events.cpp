@@ -160,8 +160,8 @@ void check_out(const py::object& out, const py::object& dtype) {
 // left and kills the process when the rows are written.
 std::string rows_do_not_fit(const LogInfo& info, std::uint64_t n, std::size_t row_bytes) {
   const double need = double(n) * double(row_bytes);
-  const std::uint64_t left = allocatable_bytes();
-  if (need <= double(left)) return "";
+  std::uint64_t left = 0;
+  if (!may_not_fit(need, left)) return "";
   return info.path + ": events(): the range holds " + std::to_string(n) + " events, " + byte_text(need) +
          " as rows of " + std::to_string(row_bytes) + " bytes, more than the " + byte_text(double(left)) +
          " this process may still allocate: read it window by window (first=, last=, into one array with out=), "

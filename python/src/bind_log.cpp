@@ -47,8 +47,8 @@ void check_state_fits(const SharedLog& log, const char* what) {
   const LogInfo& i = log.info();
   const double real = i.scalar == ScalarKind::Float ? 4 : i.scalar == ScalarKind::Double ? 8 : 16;
   const double need = double(i.disks) * (2 * 8 * real + 8);
-  const std::uint64_t left = allocatable_bytes();
-  if (need > double(left))
+  std::uint64_t left = 0;
+  if (may_not_fit(need, left))
     throw OutOfMemory(i.path + ": " + what + ": a state of " + std::to_string(i.disks) + " disks needs about " +
                       byte_text(need) + ", more than the " + byte_text(double(left)) +
                       " this process may still allocate (free memory or raise ulimit -v)");

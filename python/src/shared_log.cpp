@@ -59,6 +59,12 @@ std::uint64_t allocatable_bytes() {
   return bytes;
 }
 
+bool may_not_fit(double bytes, std::uint64_t& left) {
+  if (bytes < double(16 << 20)) return false;
+  left = allocatable_bytes();
+  return bytes > double(left);
+}
+
 std::string byte_text(double bytes) {
   char text[32];
   if (bytes >= 1e9) std::snprintf(text, sizeof text, "%.1f GB", bytes / 1e9);

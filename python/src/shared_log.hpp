@@ -37,9 +37,13 @@ struct OutOfMemory : std::runtime_error {
 };
 
 // The bytes this process may still allocate: the smallest of the machine's available memory (with swap)
-// and what its address-space and data limits (ulimit -v, -d) leave; what a request is checked against
-// before numpy allocates it (the kernel would otherwise grant it and kill the process when it is used).
+// and what its address-space and data limits (ulimit -v, -d) and its cgroup leave; what a request is
+// checked against before numpy allocates it (the kernel would otherwise grant it and kill the process when
+// it is used).
 std::uint64_t allocatable_bytes();
+// Whether `bytes` may not fit: false at once below 16 MiB (reading /proc costs more than a small state),
+// else whether they exceed allocatable_bytes(), which `left` receives.
+bool may_not_fit(double bytes, std::uint64_t& left);
 // "1.2 GB"
 std::string byte_text(double bytes);
 
