@@ -14,17 +14,31 @@ namespace ede {
 // type exactly. Pass plain doubles; read results as doubles unless you study long double runs.
 using Time = long double;
 
-// Order matters: at equal times the queue processes the lower kind first (total order time, kind, ids).
-enum class EventKind : std::uint8_t {
-  Pair = 0,    // two disks collide
-  Wall = 1,    // a disk hits a wall (walls boundary)
-  Cell = 2,    // a disk crosses into another cell: bookkeeping only, no state change, not logged
-  Wrap = 3,    // a disk crosses a periodic edge: its stored position moves by one box length
-  Action = 4,  // a scheduled action (reverse every velocity)
-  Sample = 5,  // an observer's sampling time: no state change, not logged
-  Segment = 6,  // a disk hits a wall segment (its body or an end point); Event::j is the segment's index
-};
-constexpr int kEventKindCount = 7;
+// The kinds of event, as one list from which the enum, kEventKindCount and the names (to_string) are made,
+// and the engine's dispatch (engine_core.hpp). Append only: logs store the numbers. Order matters: at
+// equal times the queue processes the lower kind first (total order time, kind, ids).
+//   Pair     two disks collide
+//   Wall     a disk hits a wall (walls boundary)
+//   Cell     a disk crosses into another cell: bookkeeping only, no state change, not logged
+//   Wrap     a disk crosses a periodic edge: its stored position moves by one box length
+//   Action   a scheduled action (reverse every velocity)
+//   Sample   an observer's sampling time: no state change, not logged
+//   Segment  a disk hits a wall segment (its body or an end point); Event::j is the segment's index
+#define EDE_EVENT_KINDS(X) \
+  X(Pair, 0, "pair")       \
+  X(Wall, 1, "wall")       \
+  X(Cell, 2, "cell")       \
+  X(Wrap, 3, "wrap")       \
+  X(Action, 4, "action")   \
+  X(Sample, 5, "sample")   \
+  X(Segment, 6, "segment")
+
+#define EDE_EVENT_KIND_ENUM(name, value, text) name = value,
+enum class EventKind : std::uint8_t { EDE_EVENT_KINDS(EDE_EVENT_KIND_ENUM) };
+#undef EDE_EVENT_KIND_ENUM
+#define EDE_EVENT_KIND_ONE(name, value, text) +1
+constexpr int kEventKindCount = 0 EDE_EVENT_KINDS(EDE_EVENT_KIND_ONE);
+#undef EDE_EVENT_KIND_ONE
 const char* to_string(EventKind);  // "pair", "wall", ...
 
 // Event::j of a wall event: which wall. Of a wrap event: which edge the disk crossed.

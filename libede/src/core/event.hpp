@@ -33,7 +33,8 @@ struct EventOutcome {
   T vjx0{}, vjy0{};         // Pair: velocity of j before the event
   T wi{}, wj{};             // rough engines, Pair and Wall: angular velocity of i (and j) after the event
   T wi0{}, wj0{};           // rough engines, Pair and Wall: angular velocity of i (and j) before the event
-  RecordBefore<T> before_i{}, before_j{};  // Pair, Wall, Segment, Wrap: the records of i (and j) before it
+  // Pair, Wall, Segment, Wrap: the records of i (and j) before it (an event of one disk repeats i's as j's).
+  RecordBefore<T> before_i{}, before_j{};
   // What the engine vouches for to the log (engine_core.hpp, "what the engine vouches for"): format version
   // 2's predictors, run on the records before the event, give exactly its time (a pair), and exactly its
   // velocities and spins (a collision). The writer then codes a residual of 0 without computing them.

@@ -25,6 +25,11 @@ struct DiskSizeSplit {
   double small_max_radius = 0;                                  // the largest radius of the others
 };
 
+// A big disk and the block of cells it scans: (2 reach + 1) on each side.
+struct BigDisk {
+  std::int32_t id, reach_x, reach_y;
+};
+
 // The split for a set of radii (no big disks if none stands out).
 DiskSizeSplit split_disk_sizes(const std::vector<double>& radii);
 

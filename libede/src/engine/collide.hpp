@@ -43,6 +43,12 @@
 
 namespace ede {
 
+// These rules are format version 2's (log/rules/collisions_v2.hpp; tests/log/test_format_rules.cpp checks
+// the bits): the engine tells the log writer so with every collision (EventOutcome::v2_velocities_exact), and
+// the writer codes residuals of 0 without recomputing them. A change to a rule here sets this false (its
+// logs then grow) until a format version follows it.
+inline constexpr bool kRulesAreFormatV2 = true;
+
 // Applies a pair collision in place. `one_plus_xi` is 2 for an elastic collision.
 template <class T>
 inline void collide_pair(T dx, T dy, T mi, T mj, T one_plus_xi, T& vix, T& viy, T& vjx, T& vjy) {

@@ -1,9 +1,12 @@
 // Effects: the small policy types an Engine is instantiated with, one axis per kind of physics a scene
-// can switch on. Four axes of two, and the engine table (engine_factory.hpp) builds six of the sixteen.
+// can switch on: Boundary, Dissipation, Field, Contact (the pair root), Walls (segments) and Spin, six
+// axes; the engine table (engine_factory.hpp) builds eight combinations per scalar type.
 //
 // The engine branches on them with `if constexpr`, so code for an effect a scene does not use is not
 // compiled into that scene's engine: an elastic gas has no restitution, no TC bookkeeping, no energy
-// accounting, and in a periodic box no wall code, in its event loop. Within Dissipative the values decide
+// accounting, and in a periodic box no wall code, in its event loop. Each policy also names the state it
+// needs (State<T>), which the engine holds (EngineState, engine_state.hpp): an empty struct, taking no
+// room, for the side that needs none, so an elastic gas's engine carries no restitution table either. Within Dissipative the values decide
 // at run time (xi, xi_w, per species pair, tc): `ede-bench effects` measured restitution, per-pair
 // restitution and the TC model at 0.98-1.00 x the elastic gas's cost per event, so splitting them into
 // more instantiations bought nothing but build time.
@@ -12,6 +15,9 @@
 #pragma once
 
 #include "core/geometry.hpp"
+#include "engine/restitution.hpp"
+#include "engine/roughness.hpp"
+#include "engine/segment_walls.hpp"
 
 namespace ede {
 
@@ -27,6 +33,8 @@ struct PeriodicBoundary {
 // Every collision elastic: the impulse 2 (dv.n) / (m_i + m_j), walls mirror the velocity.
 struct Elastic {
   static constexpr bool kDissipative = false;
+  template <class T>
+  using State = NoRestitution;
 };
 // Restitution below 1 for pairs (one value, or per pair of species) or walls, and the TC model when tc > 0;
 // the kinetic energy is tracked (stop.energy_fraction) and a run cooled below what T resolves ends.
@@ -34,17 +42,28 @@ struct Elastic {
 // why an elastic scene under gravity runs the gravity engine, which is Dissipative.
 struct Dissipative {
   static constexpr bool kDissipative = true;
+  template <class T>
+  using State = Restitution<T>;
 };
 
 // Fields acting on the disks between events. Without one, disks move in straight lines (drift); with
 // uniform gravity (walls only: in a periodic box everything would fall forever), in parabolas, and wall
 // and cell-crossing times solve quadratics. Pair times stay those of straight lines: two disks under the
 // same g see each other move in a straight line.
+struct NoGravity {};
+template <class T>
+struct Gravity {
+  T gx = 0, gy = 0;
+};
 struct NoField {
   static constexpr bool kGravity = false;
+  template <class T>
+  using State = NoGravity;
 };
 struct UniformGravity {
   static constexpr bool kGravity = true;
+  template <class T>
+  using State = Gravity<T>;
 };
 
 // Wall segments inside the box (core/segment.hpp): each disk predicts against the segments listed in its
@@ -54,9 +73,13 @@ struct UniformGravity {
 // slanted segment is a quartic the engine does not solve yet: scenes with both are refused).
 struct NoSegments {
   static constexpr bool kSegments = false;
+  template <class T>
+  using State = NoSegmentWalls;
 };
 struct WithSegments {
   static constexpr bool kSegments = true;
+  template <class T>
+  using State = SegmentWalls<T>;
 };
 
 // Rough disks (collide.hpp, docs/physics.md): each disk carries an angular velocity omega and a moment of
@@ -66,9 +89,13 @@ struct WithSegments {
 // the energy kept for stop.energy_fraction includes the rotation).
 struct Smooth {
   static constexpr bool kRough = false;
+  template <class T>
+  using State = NoRoughness;
 };
 struct Rough {
   static constexpr bool kRough = true;
+  template <class T>
+  using State = Roughness<T>;
 };
 
 // The pair contact-time root: a function, not a flag. The library's engines use the stable form of
@@ -81,7 +108,7 @@ struct StableContact {
   }
 };
 // The same root computed without branches (geometry.hpp, pair_contact_time_select): the same bits, used by
-// the neighbour scan of small systems (engine_core.hpp, consider_pair). Not an engine's policy.
+// the neighbour scan of small systems (room_pair.hpp, consider_pair). Not an engine's policy.
 struct StableContactSelect {
   template <class T>
   static T time(T dx, T dy, T dvx, T dvy, T s, T b_noise2) {

@@ -9,13 +9,10 @@ namespace ede {
 
 const char* to_string(EventKind k) {
   switch (k) {
-    case EventKind::Pair: return "pair";
-    case EventKind::Wall: return "wall";
-    case EventKind::Cell: return "cell";
-    case EventKind::Wrap: return "wrap";
-    case EventKind::Action: return "action";
-    case EventKind::Sample: return "sample";
-    case EventKind::Segment: return "segment";
+#define EDE_EVENT_KIND_NAME(name, value, text) \
+  case EventKind::name: return text;
+    EDE_EVENT_KINDS(EDE_EVENT_KIND_NAME)
+#undef EDE_EVENT_KIND_NAME
   }
   return "?";
 }

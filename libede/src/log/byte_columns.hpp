@@ -36,6 +36,20 @@ class ByteWriter {
     if (size_ == buf_.size()) grow(1);
     buf_[size_++] = b;
   }
+  // Room for n more bytes, for a caller that writes many values in a row: it writes through the returned
+  // pointer, kept in a local variable (so that a byte stored through it cannot be taken to change this
+  // writer's own fields, which the compiler would then reload after every byte), then hands back the end.
+  unsigned char* begin_write(std::size_t n) {
+    if (buf_.size() - size_ < n) grow(n);
+    return buf_.data() + size_;
+  }
+  void end_write(const unsigned char* end) { size_ = std::size_t(end - buf_.data()); }
+  // n zero bytes (the zero residuals of an event the engine vouched for).
+  void zeros(std::size_t n) {
+    if (buf_.size() - size_ < n) grow(n);
+    std::memset(buf_.data() + size_, 0, n);
+    size_ += n;
+  }
   void raw(const unsigned char* p, std::size_t n) {
     if (n == 0) return;
     if (buf_.size() - size_ < n) grow(n);
@@ -71,6 +85,24 @@ class ByteWriter {
   std::vector<unsigned char> buf_;
   std::size_t size_ = 0;
 };
+
+// A varint at p (room for it assured by the caller: at most 10 bytes for 64 bits, 19 for 128); returns the
+// end.
+[[gnu::always_inline]] inline unsigned char* put_varint(unsigned char* p, std::uint64_t v) {
+  while (v >= 0x80) {
+    *p++ = static_cast<unsigned char>(v) | 0x80;
+    v >>= 7;
+  }
+  *p++ = static_cast<unsigned char>(v);
+  return p;
+}
+inline unsigned char* put_varint(unsigned char* p, u128 v) {
+  while (v >> 64 != 0) {
+    *p++ = static_cast<unsigned char>(v) | 0x80;
+    v >>= 7;
+  }
+  return put_varint(p, std::uint64_t(v));
+}
 
 class ByteReader {
  public:

@@ -35,6 +35,14 @@ class EventCoder {
   // The first disagreement `check` found (empty: none).
   const std::string& mismatch() const { return mismatch_; }
 
+  // Codes e into `out`: an event the engine vouched for entirely (an ordinary pair collision) without
+  // building a CodedEvent.
+  void add(const EventOutcome<T>& e, const Particles<T>& p, ChunkEvents<T>& out) {
+    if (trust_ && !check_ && format_version_ >= 2 && e.v2_time_exact && e.v2_velocities_exact)
+      return out.push_plain({e.time, e.time, e.i, e.j, e.kind, e.tc_elastic, false});
+    out.push_back(code(e, p));
+  }
+
   CodedEvent<T> code(const EventOutcome<T>& e, const Particles<T>& p) {
     const bool time_exact = trust_ && e.v2_time_exact, velocities_exact = trust_ && e.v2_velocities_exact;
     CodedEvent<T> c;

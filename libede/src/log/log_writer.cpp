@@ -151,7 +151,7 @@ struct ChunkCoder {
 
   FlatMessage code(std::uint64_t first_event, const ChunkEvents<T>& events) {
     chunk.reset(first_event);
-    events.for_each([&](const CodedEvent<T>& e) { chunk.add(e); });
+    chunk.add_all(events);
     const ChunkColumns c = chunk.columns();
     FlatMessageBuilder message(root_words<logschema::Chunk>(rotation, kChunkWords, kChunkPointers) +
                               message_words_of(c.times.size()) + message_words_of(c.kinds.size()) +
@@ -209,6 +209,7 @@ struct LogWriter<T>::Impl {
   ChunkCoder<T> coder{settings.format_version, run.rotation};  // the worker's
   ChunkPool<T> pool;
   bool coder_ready = false;
+  std::uint64_t next_keyframe = 0;  // the logged-event count at which the next periodic keyframe is written
   // The open chunk, on the event loop: its events as the engine reported them.
   ChunkEvents<T> chunk_events;
   std::uint64_t chunk_first = 0;
@@ -232,8 +233,10 @@ struct LogWriter<T>::Impl {
   // the automatic keyframe interval. Runs on the event loop before the first chunk is submitted, so before
   // the worker touches the coder.
   void ensure_coder(const Particles<T>& p) {
+    if (coder_ready) return;
     if (settings.keyframe_interval == 0) settings.keyframe_interval = auto_keyframe_interval(p.size());
-    if (!coder_ready) setup_coder(p);
+    next_keyframe = (logged / settings.keyframe_interval + 1) * settings.keyframe_interval;
+    setup_coder(p);
   }
 
   void setup_coder(const Particles<T>&) {
@@ -508,10 +511,13 @@ void LogWriter<T>::on_event(const EventOutcome<T>& e, const Particles<T>& p) {
   if (e.kind == EventKind::Cell) return;
   Impl& w = *impl_;
   w.ensure_coder(p);
-  w.chunk_events.push_back(w.event_coder.code(e, p));
+  w.event_coder.add(e, p, w.chunk_events);
   ++w.logged;
   if (w.chunk_events.size() >= w.settings.chunk_events) w.flush_chunk();
-  if (w.logged % w.settings.keyframe_interval == 0) w.write_keyframe(p, e.time, nullptr);
+  if (w.logged == w.next_keyframe) {
+    w.write_keyframe(p, e.time, nullptr);
+    w.next_keyframe += w.settings.keyframe_interval;
+  }
 }
 
 template <class T>

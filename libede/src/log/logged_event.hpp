@@ -60,6 +60,9 @@ class ChunkEvents {
   T time_first() const { return events_.front().time; }
   T time_last() const { return events_.back().time; }
 
+  // An event with nothing in `extra` (version 2, its velocities vouched for or predicted exactly).
+  void push_plain(const LoggedEvent<T>& e) { events_.push_back(e); }
+
   void push_back(const CodedEvent<T>& e) {
     const bool extra = v1_ || !e.velocities_predicted;
     events_.push_back({e.time, e.predicted_time, e.i, e.j, e.kind, e.tc_elastic, extra});
@@ -76,7 +79,7 @@ class ChunkEvents {
 
   // f(const CodedEvent<T>&) for each event in order.
   template <class F>
-  void for_each(F&& f) const {
+  [[gnu::always_inline]] void for_each(F&& f) const {
     const T* x = extra_.data();
     CodedEvent<T> e;
     for (const LoggedEvent<T>& l : events_) {

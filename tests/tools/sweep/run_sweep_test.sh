@@ -118,9 +118,17 @@ mpi-kill)
     sleep 0.1
   done
   [ -n "$victim" ] || { kill $job; fail "no worker rank running run 1 was found"; }
+  orphans=$(pgrep -P "$victim")
   kill -9 "$victim"
   echo "killed the worker rank $victim"
   wait $job && fail "the MPI job went on after a rank died (it should abort)"
+  # The rank's run process gets SIGTERM when its parent dies (PR_SET_PDEATHSIG) and stops at its next
+  # check, closing its log; until then it holds the log's lock, and a rerun started at once would be
+  # refused for it (rightly). Wait for it as a user would, at most 30 s.
+  for pid in $orphans; do
+    for _ in $(seq 300); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
+    kill -0 "$pid" 2>/dev/null && fail "the killed rank's run process $pid is still running after 30 s"
+  done
   [ -f m/runs.csv ] && fail "the aborted job wrote a table"
   $MPI "$SWEEP" "$HERE/long.sweep.toml" --out-dir m --no-timing >again 2>&1 || { cat again; fail "the rerun failed"; }
   cat again
