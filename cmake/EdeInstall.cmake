@@ -5,6 +5,7 @@
 #   lib/pkgconfig/ede.pc        the same for pkg-config (link a static library with --static)
 #   bin/ede-*                   the tools
 #   share/ede/plot/*.py         the plotting scripts the tools run (found from bin/ at run time: tools/common/plot_runner.cpp)
+#   share/man/man1/*.1          the tools' manual pages, where help2man is installed (cmake/EdeManPages.cmake)
 # Everything is relocatable: the CMake package and ede.pc locate the prefix from their own place.
 include(CMakePackageConfigHelpers)
 
@@ -32,10 +33,13 @@ configure_file(${CMAKE_CURRENT_LIST_DIR}/ede.pc.in ${PROJECT_BINARY_DIR}/ede.pc 
 install(FILES ${PROJECT_BINARY_DIR}/ede.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
 
 # ede-bench-elastic too: `ede-bench effects` runs it from ede-bench's own directory.
-foreach(tool IN ITEMS ede-sim ede-replay ede-stats ede-crater ede-render ede-sweep ede-bench ede-bench-elastic ede-view)
+set(EDE_INSTALLED_TOOLS ede-sim ede-replay ede-stats ede-crater ede-render ede-sweep ede-bench ede-bench-elastic ede-view)
+foreach(tool IN LISTS EDE_INSTALLED_TOOLS)
   if(TARGET ${tool})
     install(TARGETS ${tool} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
   endif()
 endforeach()
 file(GLOB EDE_PLOT_SCRIPTS CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/tools/plot/*.py)
 install(FILES ${EDE_PLOT_SCRIPTS} DESTINATION ${CMAKE_INSTALL_DATADIR}/ede/plot)
+
+include(${CMAKE_CURRENT_LIST_DIR}/EdeManPages.cmake)

@@ -100,7 +100,7 @@ TEST_CASE("transport refuses gravity, an empty window and lags longer than the w
   CHECK_THAT(refused.error().message, Catch::Contains("gravity"));
 }
 
-TEST_CASE("a dilute periodic gas: g(sigma) three ways agree, and D is Enskog's within 10 percent", "[analysis][transport]") {
+TEST_CASE("a dilute periodic gas: g(sigma) three ways agree, and D is Enskog's within 10 percent", "[analysis][transport][slow]") {
   // 400 disks at phi = 0.05 (unit speed: kT = 1/2, m = 1) for t = 60, window from t = 5 (~70 collisions
   // per disk after the lattice start): ~1.5e5 pair collisions in the window.
   // Tolerances: g(sigma) from the collision rate against Henderson's (1 - 7 phi / 16) / (1 - phi)^2: 4 sigma

@@ -57,7 +57,7 @@ TEST_CASE("number text is printf's %.*g: special values", "[core][number_text]")
 }
 
 TEST_CASE("number text is printf's %.*g: random bit patterns of float, double and long double",
-          "[core][number_text]") {
+          "[core][number_text][slow]") {
   Rng rng(2024);
   for (int k = 0; k < 200000; ++k) {
     const std::uint64_t a = rng.next_u64(), b = rng.next_u64();

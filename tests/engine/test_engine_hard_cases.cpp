@@ -160,7 +160,7 @@ InitialState gas_with_big_disks() {
 }
 }  // namespace
 
-TEST_CASE("hard case: big disks outside the cell lists meet every disk they should", "[hard][big]") {
+TEST_CASE("hard case: big disks outside the cell lists meet every disk they should", "[hard][big][slow]") {
   // The all-pairs baseline checks every pair after every event: the cell engine with its big-disk rule
   // must produce the same collisions (to round-off, until chaos parts the sequences) in both boundaries,
   // and keep every invariant over a long run.

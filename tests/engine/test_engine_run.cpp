@@ -160,7 +160,7 @@ TEST_CASE("time reversal: reversing every velocity retraces the path back to the
   CHECK(worst < 1e-9);
 }
 
-TEST_CASE("the branch-free neighbour scan gives the same events, bit for bit", "[run][determinism]") {
+TEST_CASE("the branch-free neighbour scan gives the same events, bit for bit", "[run][determinism][slow]") {
   // EngineOptions::branch_free_scan_up_to is a speed choice: both scans must pick the same winner among
   // the same candidates. Walled and periodic, float and double, a dilute and a dense lattice.
   for (BoundaryKind bc : {BoundaryKind::Walls, BoundaryKind::Periodic})
@@ -231,7 +231,7 @@ TEST_CASE("both neighbour scans break an exact tie between two partners by the l
   }
 }
 
-TEST_CASE("the all-pairs baseline and the cell engine agree", "[run][baseline]") {
+TEST_CASE("the all-pairs baseline and the cell engine agree", "[run][baseline][slow]") {
   // Both predict with the same functions; they differ in when predictions are made (cell crossings), so
   // event times agree to round-off and the sequences agree until chaos amplifies that round-off.
   for (BoundaryKind bc : {BoundaryKind::Walls, BoundaryKind::Periodic}) {

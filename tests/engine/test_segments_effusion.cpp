@@ -17,7 +17,7 @@
 #include "ede/simulation.hpp"
 #include "scene_test_support.hpp"
 
-TEST_CASE("segment effusion: the rate through a small hole matches kinetic theory", "[segment][statistical]") {
+TEST_CASE("segment effusion: the rate through a small hole matches kinetic theory", "[segment][statistical][slow]") {
   const double hole = 0.05, r = 0.0005, area = 1.0, t_end = 10.0;
   ede::test::GasToml gas = ede::test::left_half_gas("2000", "0.0005");
   gas.seed = "", gas.stop = "time = 10.0";

@@ -113,7 +113,7 @@ TEST_CASE("the pinned digest of the small run's version 2 chunks has not changed
   CHECK(h.hex() == "bb6aadc87d17840bf56b1e5d4b406425");
 }
 
-TEST_CASE("a run killed with SIGKILL leaves a readable log, --resume completes it exactly", "[log][resume][tool]") {
+TEST_CASE("a run killed with SIGKILL leaves a readable log, --resume completes it exactly", "[log][resume][tool][slow]") {
   const std::string scene = temp_path("kill-scene.toml");
   std::ofstream(scene) << "seed = 3\n[box]\nsize = [1.0, 1.0]\nboundary = \"periodic\"\n"
                           "[engine]\nrebuild_interval = 100000\n[log]\nkeyframe_interval = 30000\n"

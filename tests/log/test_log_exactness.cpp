@@ -76,7 +76,7 @@ TEST_CASE("a wrong vouch is caught by the writer's check, and trusted without it
   CHECK_THAT(velocities.mismatch(), Catch::Contains("vouched for its velocities"));
 }
 
-TEST_CASE("every example scene runs with the writer checking each vouch, and writes the same log", "[log][exactness][tool]") {
+TEST_CASE("every example scene runs with the writer checking each vouch, and writes the same log", "[log][exactness][tool][slow]") {
   std::vector<std::string> scenes;
   for (const char* dir : {"examples", "examples/scenes", "examples/rough", "examples/dense"})
     for (const auto& f : std::filesystem::directory_iterator(source_path(dir)))

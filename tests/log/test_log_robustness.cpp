@@ -81,7 +81,7 @@ TEST_CASE("a truncated log reads up to its last complete record, or fails clearl
   CHECK(refused > 5);  // cuts before the first keyframe leave nothing to read
 }
 
-TEST_CASE("a flipped bit anywhere is an error or harmless, never a wrong answer", "[log][robust]") {
+TEST_CASE("a flipped bit anywhere is an error or harmless, never a wrong answer", "[log][robust][slow]") {
   // Three acceptable outcomes: the log is refused; it reads as incomplete (the damage cuts it short, and
   // it says so) and what it holds is an exact prefix of the original; or it reads as complete (e.g. the
   // index was rebuilt around the damage) with exactly the original's content.

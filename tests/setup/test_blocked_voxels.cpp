@@ -132,7 +132,7 @@ TEST_CASE("random placement with blocked voxels matches an all-pairs reference",
   }
 }
 
-TEST_CASE("a blocked voxel is wholly inside an exclusion zone, and the deep inside of every zone is blocked", "[setup][placement]") {
+TEST_CASE("a blocked voxel is wholly inside an exclusion zone, and the deep inside of every zone is blocked", "[setup][placement][slow]") {
   for (bool periodic : {true, false}) {
     INFO("periodic " << periodic);
     const std::vector<double> radii = radii_for(2000, 0.5, 0.4, 5);

@@ -169,7 +169,7 @@ TEST_CASE("the free-voxel list holds exactly the unmarked voxels of its rectangl
 }
 
 TEST_CASE("free-voxel sampling places valid, reproducible disks, and starts with the default's draws",
-          "[setup][placement]") {
+          "[setup][placement][slow]") {
   struct Case {
     bool periodic;
     Region region;
@@ -208,7 +208,7 @@ TEST_CASE("free-voxel sampling reports a jammed placement as the default does", 
 //   over the disks placed after the switch, a chi-square test on 4 x 4 bins of the centre's position within its
 //   voxel (15 degrees of freedom, limit 48: p ~ 2e-5). Candidates from the inner half of each voxel's side,
 //   say, fail it by orders of magnitude (checked while writing this test), and pass the first check.
-TEST_CASE("free-voxel sampling gives random sequential addition's law", "[setup][placement][statistics]") {
+TEST_CASE("free-voxel sampling gives random sequential addition's law", "[setup][placement][statistics][slow]") {
   const std::size_t n = 1200, late = n * 85 / 100;
   const int seeds = 120;
   auto late_gap = [&](const Placement& p) {

@@ -127,7 +127,7 @@ TEST_CASE("grow: polydisperse radii from a range, periodic", "[setup][grow]") {
 // phi_J in 0.82-0.85 (O'Hern et al. 2003 give 0.84 for slow compression of this mixture; fast growth
 // jams lower, Donev et al. and Skoge et al. report 0.82-0.84 for rates 1e-1-1e-3). Tolerance: that range,
 // for 500 disks (finite-size spread about 0.005 between seeds).
-TEST_CASE("grow: a bidisperse mixture jams with phi_J in 0.82-0.85", "[setup][grow]") {
+TEST_CASE("grow: a bidisperse mixture jams with phi_J in 0.82-0.85", "[setup][grow][slow]") {
   const InitialState s = grown(scene_text("periodic", kBi, "pressure = 1e6\nrate = 0.01\n"));
   const double phi = packing(s);
   INFO("phi_J = " << phi << ", " << s.note);

@@ -101,7 +101,7 @@ TEST_CASE("every bad scene is refused by ede-sim with its expected message", "[t
   CHECK(checked >= 20);
 }
 
-TEST_CASE("every log tool refuses bad logs clearly and reads cut ones with a warning", "[tool][bad-input]") {
+TEST_CASE("every log tool refuses bad logs clearly and reads cut ones with a warning", "[tool][bad-input][slow]") {
   const std::vector<std::pair<std::string, std::string>> commands = {
       {"ede-replay", "{} --at end -o /dev/null"},  {"ede-replay", "info {}"},
       {"ede-replay", "events {} --from 0 --to 1"}, {"ede-replay", "verify {}"},

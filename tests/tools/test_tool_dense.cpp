@@ -12,7 +12,7 @@
 
 using namespace ede::test;
 
-TEST_CASE("ede-sim grows the bidisperse example to jamming and reports phi_J", "[tools][grow]") {
+TEST_CASE("ede-sim grows the bidisperse example to jamming and reports phi_J", "[tools][grow][slow]") {
   const ToolRun r = run_tool("ede-sim", source_path("examples/dense/jam-bidisperse.toml") +
                                             " --json -q --set species.small.count=150 --set species.big.count=150",
                              "jam");
@@ -47,7 +47,7 @@ TEST_CASE("a grown state is the log's first keyframe and a later scene starts fr
   CHECK(r.status == 0);
 }
 
-TEST_CASE("ede-sweep runs the small equation-of-state sweep and draws Z against Kolafa-Rottner", "[tools][grow]") {
+TEST_CASE("ede-sweep runs the small equation-of-state sweep and draws Z against Kolafa-Rottner", "[tools][grow][slow]") {
   const std::string dir = temp_path("eos-small");
   const std::string png = dir + ".png";
   std::filesystem::remove_all(dir);
@@ -89,7 +89,7 @@ TEST_CASE("ede-sweep runs the small equation-of-state sweep and draws Z against 
   std::filesystem::remove(png);
 }
 
-TEST_CASE("ede-bench grow times both targets", "[tools][grow]") {
+TEST_CASE("ede-bench grow times both targets", "[tools][grow][slow]") {
   const ToolRun r = run_tool("ede-bench", "grow --disks 200", "bench-grow", 300);
   INFO(r.err);
   REQUIRE(r.status == 0);

@@ -146,7 +146,7 @@ double number(const std::map<std::string, std::string>& row, const std::string& 
 
 }  // namespace
 
-TEST_CASE("ede-bench accuracy --quick: a row per setting, finite errors ordered as physics says", "[tool][ede-bench][accuracy]") {
+TEST_CASE("ede-bench accuracy --quick: a row per setting, finite errors ordered as physics says", "[tool][ede-bench][accuracy][slow]") {
   const std::string out = temp_path("accuracy");
   const ToolRun r = run_tool("ede-bench", "accuracy --quick --no-plot --out-dir " + out + " --scenes " +
                                               source_path("examples/accuracy") + " --tmp-dir " + out + "-tmp",

@@ -209,7 +209,7 @@ TEST_CASE("ede-crater scan: vector values, and runs that end before the energy f
   CHECK(rows[2].rfind("\"[0, -4]\",4,1,", 0) == 0);  // the value as typed
 }
 
-TEST_CASE("ede-crater scan --no-logs keeps the results and no log, and collapse is marked", "[tool][ede-crater]") {
+TEST_CASE("ede-crater scan --no-logs keeps the results and no log, and collapse is marked", "[tool][ede-crater][slow]") {
   const std::string dir = temp_path("crater-scan-nologs");
   const ToolRun r = crater("scan " + kScene + " --param physics.tc --values 0,1e-6 --no-logs -q" + kSmall +
                                " --set species.bed.count=300 --set species.projectile.mass=125 --out-dir " + dir,

@@ -59,6 +59,14 @@ TEST_CASE("ede-sim runs the default scene and reports the required JSON keys", "
   CHECK(j["effects"].get<std::string>().rfind("walls, elastic", 0) == 0);
 }
 
+TEST_CASE("the default scene, the README's demo, runs without a warning", "[tool][ede-sim]") {
+  const std::string log = std::string(EDE_BINARY_DIR) + "/tests/default-scene.ede";
+  const ToolRun r = run_tool("ede-sim", source_path("examples/gas.toml") + " --quiet -o " + log, "default-scene");
+  REQUIRE(r.status == 0);
+  CHECK(r.err.empty());
+  CHECK(r.out.find("warning") == std::string::npos);
+}
+
 TEST_CASE("ede-sim prints a readable summary", "[tool][ede-sim]") {
   const ToolRun r = run_tool("ede-sim", source_path("examples/gas.toml") + " --quiet", "text");
   REQUIRE(r.status == 0);
@@ -173,7 +181,7 @@ TEST_CASE("ede-sim rejects bad input with a clear message and a non-zero exit", 
 }
 
 TEST_CASE("ede-sim on Ctrl-C: summary so far, what the log kept, how to resume, and the resume completes it exactly",
-          "[tool][ede-sim][resume]") {
+          "[tool][ede-sim][resume][slow]") {
   // 4000 disks for 6 M events (seconds): SIGINT arrives once the log holds a resumable keyframe.
   const std::string scene = temp_path("sigint.toml");
   std::ofstream(scene) << "seed = 2\n[box]\nsize = [1.0, 1.0]\nboundary = \"periodic\"\n[engine]\nrebuild_interval = "

@@ -90,7 +90,7 @@ TEST_CASE("ede-stats hist: --to end is the end of the log, as is leaving --to ou
   CHECK_THAT(late.err, Catch::Contains("--to 0.7 is after the end of the log (t = 0.5); --to end gives the last state"));
 }
 
-TEST_CASE("ede-stats hist --plot draws PNG and SVG", "[tool][ede-stats]") {
+TEST_CASE("ede-stats hist --plot draws PNG and SVG", "[tool][ede-stats][slow]") {
   const std::string log = make_log("hist-plot.ede");
   for (const std::string format : {"png", "svg"}) {
     const std::string figure = scratch("hist." + format);

@@ -97,7 +97,7 @@ TEST_CASE("ede-stats pressure: a periodic gas has only the virial pressure", "[t
   CHECK(f[13] == "0");
 }
 
-TEST_CASE("ede-stats pressure --plot writes PNG and SVG figures", "[tool][ede-stats]") {
+TEST_CASE("ede-stats pressure --plot writes PNG and SVG figures", "[tool][ede-stats][slow]") {
   const std::string png = scratch("walls.png"), svg = scratch("periodic.svg");
   std::remove(png.c_str());
   std::remove(svg.c_str());

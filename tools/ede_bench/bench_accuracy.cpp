@@ -54,7 +54,7 @@ Command accuracy_command(CLI::App& app) {
   CLI::Option* repeat = a->add_option("--repeat", plan.repeat, "timed runs per measurement; medians are reported")
                             ->check(CLI::Range(1, 100));
   a->add_option("--tmp-dir", plan.tmp_dir, "where the temporary logs go (deleted as soon as read)");
-  a->add_flag("--quick", o->quick, "a smoke run (well under a minute): stop.events=200000, 1 repeat, shorter lists");
+  a->add_flag("--quick", o->quick, "a smoke run (well under a minute): stop.events=200000, 1 repeat, shorter lists, __float128 on the first scene only");
   a->add_flag("--no-plot", o->no_plot, "write the tables only");
   return {a, [o, repeat] {
             if (o->quick && !repeat->count()) o->plan.repeat = 1;

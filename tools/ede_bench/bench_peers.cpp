@@ -10,7 +10,7 @@
 // Why a minimum: a run's end waits for the log's writer to code the chunks still queued (up to ~5 x 16 384
 // events) and syncs the file to disk, a fixed ~4-5 ms that is ~15 % of a 10-collisions-per-disk segment at
 // N = 10^4 (30 ms) and nothing at 10^6; 2 * 10^6 collisions make the segment steady at every N
-// (docs/performance.md, sixth round).
+// (docs/performance-journal.md, sixth round).
 // Rejected: timing ede-sim from outside (setup, which at N = 10^6 takes longer than the segment, and the
 // summary would be in the time).
 #include <cstdio>

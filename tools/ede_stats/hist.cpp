@@ -73,18 +73,16 @@ std::string curve_csv(const DistributionReport& r) {
   return text;
 }
 
-std::string p_text(double p) { return p < 1e-300 ? "< 1e-300" : brief(p); }
-
 void report(const HistOptions& opt, const OpenedLog& o, const Times& times, const DistributionReport& r) {
   std::printf("log              %s (%zu disks)\n", opt.log.c_str(), o.overview.disks);
   std::printf("disks            %s: %zu\n", opt.species.empty() ? "all" : ("species " + opt.species).c_str(), r.disks);
   std::printf("times            %s; %zu samples of %s\n", times.text.c_str(), r.samples, opt.quantity.c_str());
   std::printf("kT               %s  (<m v^2/2>, 2D equipartition, k = 1)\n", brief(r.kT).c_str());
   std::printf("KS vs MB         D = %s, p = %s  (energies against exp(-E/kT)/kT at the measured kT)\n",
-              brief(r.ks.statistic).c_str(), p_text(r.ks.p_value).c_str());
+              brief(r.ks.statistic).c_str(), p_value_text(r.ks.p_value).c_str());
   if (r.initial_kT > 0)
     std::printf("initial (t = 0)  kT = %s, KS vs MB at that kT: D = %s, p = %s\n", brief(r.initial_kT).c_str(),
-                brief(r.initial_ks.statistic).c_str(), p_text(r.initial_ks.p_value).c_str());
+                brief(r.initial_ks.statistic).c_str(), p_value_text(r.initial_ks.p_value).c_str());
   else
     std::printf("initial (t = 0)  at rest\n");
   std::printf("mean free time   %s (from the whole log)\n", brief(o.overview.mean_free_time()).c_str());
@@ -109,7 +107,7 @@ int run_hist(const HistOptions& opt) {
   const DistributionReport& r = measured.value();
   const std::string title = std::string(opt.species.empty() ? "all disks" : opt.species) + ", N = " +
                             std::to_string(r.disks) + ", " + times.value().text + "\nkT = " + brief(r.kT) +
-                            ", KS D = " + brief(r.ks.statistic) + " (p = " + p_text(r.ks.p_value) + ")";
+                            ", KS D = " + brief(r.ks.statistic) + " (p = " + p_value_text(r.ks.p_value) + ")";
   return write_csv_and_plot({.output = opt.output,
                              .plot = opt.plot,
                              .csv = hist_csv(r),

@@ -21,8 +21,6 @@ struct ImpactsCli {
   TableOutput out;
 };
 
-std::string p_text(double p) { return p < 1e-300 ? "< 1e-300" : brief(p, 3); }
-
 Table table_of(const ImpactStatistics& r) {
   Table t;
   std::vector<double> bl, br, gl, gr, one(r.impact.bins(), 1.0);
@@ -56,9 +54,9 @@ int run_impacts(const ImpactsCli& c) {
                           " wall and segment" + (r.truncated ? " (histograms and tests: the first ones only)" : ""));
   s.add("kT", brief(r.kT) + " (at the start of the range, centre-of-mass frame in a periodic box)");
   s.add("<|b|/sigma>", brief(r.mean_impact) + " (uniform law: 0.5); KS against U(0,1): D = " +
-                           brief(r.impact_ks.statistic, 3) + ", p = " + p_text(r.impact_ks.p_value));
+                           brief(r.impact_ks.statistic, 3) + ", p = " + p_value_text(r.impact_ks.p_value, 3));
   s.add("<g>", brief(r.mean_speed) + "; KS of mu g^2/2kT against Gamma(3/2) (flux-weighted Maxwellian): D = " +
-                   brief(r.speed_ks.statistic, 3) + ", p = " + p_text(r.speed_ks.p_value));
+                   brief(r.speed_ks.statistic, 3) + ", p = " + p_value_text(r.speed_ks.p_value, 3));
   s.add("<|J|>", brief(r.mean_impulse) + " per pair collision" +
                      (r.wall_collisions ? ", " + brief(r.mean_wall_impulse) + " per wall collision" : std::string()));
   s.number("pair_collisions", double(r.pair_collisions)), s.number("wall_collisions", double(r.wall_collisions));

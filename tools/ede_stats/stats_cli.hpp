@@ -23,6 +23,11 @@
 
 namespace ede::stats_tool {
 
+// A test's p-value in a report: "< 1e-300" where the tail underflows, else `digits` significant digits.
+inline std::string p_value_text(double p, int digits = 6) {
+  return p < 1e-300 ? "< 1e-300" : ede::tools::brief(p, digits);
+}
+
 inline int fail(const std::string& message) {
   ede::tools::report_error("ede-stats", message);
   return 1;

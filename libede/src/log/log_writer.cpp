@@ -104,7 +104,7 @@ std::vector<unsigned char> one_scalar(T v) {
 }  // namespace
 
 std::uint64_t auto_keyframe_interval(std::size_t disks) {
-  return std::max<std::uint64_t>(std::uint64_t(1) << 18, 4 * std::uint64_t(disks));
+  return std::max<std::uint64_t>(std::uint64_t(1) << 18, 16 * std::uint64_t(disks));
 }
 
 LogSettings LogSettings::from(const LogSpec& spec) {

@@ -19,10 +19,12 @@
 
 namespace ede {
 
-// max(2^18, 4 N) logged events: a keyframe costs ~34 bytes per disk; at N = 10^4 a version 2 log holds
+// max(2^18, 16 N) logged events: a keyframe costs ~34 bytes per disk; at N = 10^4 a version 2 log holds
 // ~4.4 bytes per event, so 2^18 adds ~0.5 B/event and brings the median seek in a 10^7-event log from
-// ~34 ms (2^20) to ~14 ms. The 4 N term keeps keyframes a bounded share of the file at large N (a fixed
-// interval took 55% of a version 1 log at N = 10^6). See docs/performance.md, "Event log".
+// ~34 ms (2^20) to ~14 ms. The 16 N term keeps keyframes a bounded share of the file at large N: 34 N / I
+// bytes per event, ~2 with 16 N (4 N gave ~8.5 at N = 10^5, more than the events themselves). A seek then
+// replays up to ~N / 10^6 s of events at N > 16384, and less in practice: the engine's rebuild keyframes
+// (every 16 N engine events, ~11 N logged at phi = 0.5) fall in between. docs/performance.md, "Event log".
 std::uint64_t auto_keyframe_interval(std::size_t disks);
 
 struct LogSettings {
