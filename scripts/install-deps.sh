@@ -11,12 +11,15 @@ set -eu
 # build works without them, ede-sweep then runs local processes only). python3-ipykernel, python3-nbclient,
 # python3-nbformat: Jupyter's kernel and headless notebook execution (the notebook example's test; the
 # test skips without them). help2man: the tools' manual pages, made from their --help at build time (the
-# build skips them without it).
+# build skips them without it). python3-venv, python3-pip, python3-setuptools, python3-wheel: `pip install .`
+# of the Python module into a venv (pyproject.toml): setuptools drives CMake because every Python environment
+# has it (scikit-build-core is not in Debian 12, classic scikit-build is deprecated and only Debian's python3
+# would see it); wheel for `pip wheel`.
 PACKAGES="build-essential cmake clang pkg-config capnproto libcapnp-dev libzstd-dev libcli11-dev \
 catch2 libtomlplusplus-dev libxxhash-dev zlib1g-dev nlohmann-json3-dev python3-matplotlib libcairo2-dev \
 libclang-rt-14-dev pybind11-dev python3-dev python3-numpy python3-pytest python3-gsd python3-ase \
 ffmpeg libcpp-httplib-dev chromium python3-websocket libopenmpi-dev openmpi-bin python3-ipykernel \
-python3-nbclient python3-nbformat help2man"
+python3-nbclient python3-nbformat help2man python3-venv python3-pip python3-setuptools python3-wheel"
 
 missing=""
 for p in $PACKAGES; do

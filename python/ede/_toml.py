@@ -1,13 +1,19 @@
-"""A scene given as a dict, written as TOML text for the library's one scene loader.
+"""TOML for the package: a scene given as a dict, written as TOML text for the library's one scene loader,
+and `loads`, the standard library's reader (tomllib, Python 3.11+; tomli, the same code, before).
 
 Only what scenes use: tables, arrays of tables (species), strings, booleans, integers, floats (repr is
-the shortest text that reads back to the same double), and arrays of these. Debian 12's Python has
-tomllib to read TOML but nothing to write it; this writer is small enough to own.
+the shortest text that reads back to the same double), and arrays of these. Python has tomllib to read
+TOML but nothing to write it; this writer is small enough to own.
 """
 import math
 import numbers
 
-__all__ = ["dumps", "value_text"]
+try:
+    from tomllib import loads
+except ImportError:  # Python < 3.11 (pyproject.toml requires tomli there)
+    from tomli import loads
+
+__all__ = ["dumps", "loads", "value_text"]
 
 
 def _key(k):

@@ -1,9 +1,9 @@
 """Log: an event log (.ede) opened for reading -- states at any time, events, checks."""
 import numbers
 import os
-import tomllib
 
 from . import _ede
+from ._toml import loads
 from .state import State
 
 __all__ = ["Log", "open"]
@@ -12,12 +12,21 @@ EVENT_KINDS = ("pair", "wall", "cell", "wrap", "action", "sample")
 
 
 class Log:
-    """An event log opened for reading (``ede.open(path)``).
+    """An event log opened for reading (``ede.open(path)``), best used as a context manager::
+
+        with ede.open("gas.ede") as log:
+            s = log.state(0.5)
 
     Nothing in the file is trusted: a damaged or truncated log raises ede.CorruptLogError naming the
     file and the byte; a log whose run was killed reads up to its last complete record
     (``info["complete"]`` is False). States are rebuilt from the nearest keyframe with the engine's own
     functions: bit-identical to the run, and to ``ede-replay --at``.
+
+    close() (or the end of the ``with`` block) frees the file at once; any later use raises ede.Error
+    saying so. The arrays already returned stay valid. One Log may be shared by threads: their calls take
+    turns (open the file once per thread to read in parallel). Ctrl-C stops a long state() or events() at
+    its next chunk of events and raises KeyboardInterrupt; the Log stays usable. A request that cannot fit
+    in memory raises MemoryError saying how much it needs, before anything is allocated.
     """
 
     def __init__(self, path):
@@ -25,16 +34,32 @@ class Log:
             raise TypeError("ede.open: expected a path (str or os.PathLike), got %s" % type(path).__name__)
         self.path = os.fspath(path)
         self._log = _ede.Log(self.path)
-        self._info = None
+        self._scene = None
+
+    def close(self):
+        """Frees the file (after calls in progress on other threads return). Idempotent."""
+        self._log.close()
+
+    @property
+    def closed(self):
+        return self._log.closed
+
+    def __enter__(self):
+        self._log.info()  # a closed Log raises here, as everywhere
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+        return False
 
     @property
     def info(self):
         """What the log holds: a dict (scene as a dict, seed, counts, time span, complete or not, ...)."""
-        if self._info is None:
-            info = self._log.info()
-            info["scene"] = tomllib.loads(info["scene_text"])
-            self._info = info
-        return self._info
+        info = self._log.info()
+        if self._scene is None:
+            self._scene = loads(info["scene_text"])
+        info["scene"] = self._scene
+        return info
 
     @property
     def species(self):
@@ -123,6 +148,8 @@ class Log:
         return self._log.content_digest()
 
     def __repr__(self):
+        if self.closed:
+            return "<ede.Log %s (closed)>" % self.path
         i = self.info
         return "<ede.Log %s: %d disks, %d events, t in [%g, %g]%s>" % (
             self.path, i["disks"], i["events"], i["start_time"], i["end_time"],

@@ -4,6 +4,7 @@ import os
 import sys
 
 from . import _ede, _toml
+from ._errors import InvalidError
 from .progress import make_progress
 from .state import State
 
@@ -38,9 +39,8 @@ def _scene_source(scene):
 def load_scene(scene, set=None):
     """The effective scene (after `set` overrides) as a dict, checked by the same loader as ede-sim: a bad
     scene raises ede.InvalidError with ede-sim's message."""
-    import tomllib
     text, is_file, name = _scene_source(scene)
-    return tomllib.loads(_ede.check_scene(text, is_file, name, _overrides(set)))
+    return _toml.loads(_ede.check_scene(text, is_file, name, _overrides(set)))
 
 
 class Simulation:
@@ -57,10 +57,16 @@ class Simulation:
     Pausing never changes what happens: the events (and the log) are the same bit for bit whatever the
     slices. Ctrl-C during run() or advance_to() stops the run at its next check and raises
     KeyboardInterrupt; the log keeps every complete record (close() it, or go on running).
+
+    As a context manager (``with ede.Simulation(...) as sim:``) it is closed at the end of the block.
+    After close() or finish(), what describes the run as it ended (summary, status, time, counts, message,
+    scene_text, log_kept()) stays readable; running it, its state, write_state_csv() and impulses() raise
+    ede.Error saying it was closed.
     """
 
     def __init__(self, scene, log=None, set=None, *, impulses=False, _resume=None):
         self._impulses = bool(impulses)
+        self._closed_by = None  # "close()" or "finish()" once closed
         if _resume is not None:
             self._sim = _ede.Simulation(os.fspath(_resume))
             return
@@ -70,8 +76,19 @@ class Simulation:
         self._sim = _ede.Simulation(text, is_file, name, _overrides(set), os.fspath(log) if log else "",
                                     self._impulses)
 
+    def _check_open(self, what):
+        if self._closed_by:
+            raise InvalidError("%s: this ede.Simulation was closed by %s: a closed run cannot go on or be read; "
+                               "its log can: ede.open(path), or ede.resume(path) if it was not finished"
+                               % (what, self._closed_by))
+
+    @property
+    def closed(self):
+        return self._closed_by is not None
+
     def run(self, max_events=None, progress=False):
         """Runs to the scene's stop condition (or `max_events` more events); returns the status."""
+        self._check_open("run()")
         callback, done = make_progress(progress)
         try:
             return self._sim.run(max_events, callback)
@@ -80,6 +97,7 @@ class Simulation:
 
     def advance_to(self, t, progress=False):
         """Processes every event up to time t and leaves the state at t; returns the status."""
+        self._check_open("advance_to()")
         callback, done = make_progress(progress)
         try:
             return self._sim.advance_to(t, callback)
@@ -87,10 +105,12 @@ class Simulation:
             done()
 
     def interrupt(self):
+        self._check_open("interrupt()")
         self._sim.interrupt()
 
     @property
     def state(self):
+        self._check_open("state")
         return State(self._sim.state())
 
     @property
@@ -120,13 +140,19 @@ class Simulation:
         return self._sim.scene_text()
 
     def write_state_csv(self, path):
+        self._check_open("write_state_csv()")
         self._sim.write_state_csv(os.fspath(path))
 
     def finish(self):
         """Ends the run here, as if a stop condition held now: the events still due at exactly this time are
         processed, then the log is closed complete at this time (every tool reads it as a finished run,
         Log.verify() re-runs it to this time, its end state is this state). The log cannot be resumed
-        afterwards (close() keeps an unfinished run resumable instead). Then as close(). Idempotent."""
+        afterwards (close() keeps an unfinished run resumable instead). Then as close(). Idempotent; after
+        close() it raises ede.Error (the log was closed resumable, not finished)."""
+        if self._closed_by == "finish()":
+            return
+        self._check_open("finish()")
+        self._closed_by = "finish()"  # closed even if finishing fails (the error says why)
         self._sim.finish()
 
     def impulses(self):
@@ -135,6 +161,7 @@ class Simulation:
         over pair collisions), pair_collisions and wall_collisions. The pressure over (t0, t1] comes from
         two of them, d = at t1 - at t0 (as ede.pressure and ede-stats pressure compute it):
         walls P = d wall.sum() / (2 (Lx + Ly) (t1 - t0)); virial P = (N kT + d virial / (2 (t1 - t0))) / A."""
+        self._check_open("impulses()")
         if not self._impulses:
             raise ValueError("impulses(): this Simulation keeps no impulse sums; make it with "
                              "ede.Simulation(scene, ..., impulses=True)")
@@ -142,6 +169,7 @@ class Simulation:
 
     def close(self):
         """Closes the log (a finished run's log gets its index). Idempotent."""
+        self._closed_by = self._closed_by or "close()"
         self._sim.close()
 
     def log_kept(self):

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "bindings.hpp"
+#include "shared_log.hpp"
 #include "ede/collision_stats.hpp"
 
 namespace ede::python {
@@ -42,7 +43,7 @@ py::dict block_dict(const PressureSeries& p) {
   return d;
 }
 
-std::int32_t species_index(const Log& log, const py::object& species) {
+std::int32_t species_index(const SharedLog& log, const py::object& species) {
   if (species.is_none()) return kAllSpecies;
   const auto& names = log.info().species_names;
   const std::string name = py::str(species);
@@ -61,7 +62,7 @@ std::vector<double> double_times(const py::object& times) {
 
 void bind_analysis(py::module_& m) {
   m.def("distribution",
-        [](const Log& log, py::object times, py::object species, const std::string& quantity, std::size_t bins) {
+        [](SharedLog& log, py::object times, py::object species, const std::string& quantity, std::size_t bins) {
           DistributionRequest r;
           r.times = double_times(times);
           r.species = species_index(log, species);
@@ -69,7 +70,7 @@ void bind_analysis(py::module_& m) {
             throw py::value_error("quantity: expected \"speed\" or \"energy\", got \"" + quantity + "\"");
           r.quantity = quantity == "speed" ? Quantity::Speed : Quantity::Energy;
           r.bins = bins;
-          const DistributionReport rep = released([&] { return measure_distribution(log, r); });
+          const DistributionReport rep = log.read("distribution()", [&](const Log& l) { return measure_distribution(l, r); });
           py::dict d;
           d["disks"] = rep.disks, d["samples"] = rep.samples, d["kT"] = rep.kT;
           d["ks"] = ks_dict(rep.ks);
@@ -82,13 +83,13 @@ void bind_analysis(py::module_& m) {
           d["curve_x"] = arr(rep.curve_x), d["curve_density"] = arr(rep.curve_density);
           return d;
         });
-  m.def("energy_curve", [](const Log& log, py::object from, py::object to, py::object every, py::object points) {
+  m.def("energy_curve", [](SharedLog& log, py::object from, py::object to, py::object every, py::object points) {
     EnergyCurveRequest r;
     if (!from.is_none()) r.from = from.cast<double>();
     if (!to.is_none()) r.to = to.cast<double>();
     if (!every.is_none()) r.every = every.cast<double>();
     if (!points.is_none()) r.points = points.cast<std::size_t>();
-    const EnergyCurve c = released([&] { return energy_curve(log, r); });
+    const EnergyCurve c = log.read("energy_curve()", [&](const Log& l) { return energy_curve(l, r); });
     py::dict d = series_dict(c.series);
     d["restitution"] = c.restitution, d["spacing"] = c.spacing, d["mean_free_time"] = c.mean_free_time;
     d["initial_energy"] = c.initial_energy, d["haff_tau"] = c.haff_tau;
@@ -99,9 +100,9 @@ void bind_analysis(py::module_& m) {
     d["haff_ratio"] = arr(haff);
     return d;
   });
-  m.def("collision_series", [](const Log& log, py::object times) {
+  m.def("collision_series", [](SharedLog& log, py::object times) {
     const std::vector<double> t = double_times(times);
-    const CollisionSeries c = released([&] { return collision_series(log, t); });
+    const CollisionSeries c = log.read("collision_series()", [&](const Log& l) { return collision_series(l, t); });
     py::dict d = series_dict(c.series);
     d["reference_speed"] = c.reference_speed;
     d["rate"] = arr(c.rate), d["mean_free_time"] = arr(c.mean_free_time);
@@ -112,12 +113,12 @@ void bind_analysis(py::module_& m) {
     d["slow_percent"] = arr(slow), d["medium_percent"] = arr(medium), d["fast_percent"] = arr(fast);
     return d;
   });
-  m.def("impacts", [](const Log& log, py::object from, py::object to, std::size_t bins) {
+  m.def("impacts", [](SharedLog& log, py::object from, py::object to, std::size_t bins) {
     ImpactRequest r;
     if (!from.is_none()) r.range.from_time = from.cast<double>();
     if (!to.is_none()) r.range.to_time = to.cast<double>();
     r.bins = bins;
-    const ImpactStatistics s = released([&] { return impact_statistics(log, r); });
+    const ImpactStatistics s = log.read("impacts()", [&](const Log& l) { return impact_statistics(l, r); });
     py::dict d;
     d["pair_collisions"] = s.pair_collisions, d["wall_collisions"] = s.wall_collisions, d["kT"] = s.kT;
     d["impact_edges"] = arr(s.impact.edges), d["impact_count"] = arr(s.impact.count);
@@ -129,10 +130,10 @@ void bind_analysis(py::module_& m) {
     d["mean_impulse"] = s.mean_impulse, d["mean_wall_impulse"] = s.mean_wall_impulse, d["truncated"] = s.truncated;
     return d;
   });
-  m.def("species_stats", [](const Log& log, py::object times) {
+  m.def("species_stats", [](SharedLog& log, py::object times) {
     const std::vector<double> t = double_times(times);
     py::list out;
-    for (const SpeciesTable& table : released([&] { return species_tables(log, t); })) {
+    for (const SpeciesTable& table : log.read("species_stats()", [&](const Log& l) { return species_tables(l, t); })) {
       for (const SpeciesStats& s : table.rows) {
         py::dict d;
         d["time"] = table.time, d["species"] = s.name, d["n"] = s.n;
@@ -145,12 +146,12 @@ void bind_analysis(py::module_& m) {
     }
     return out;
   });
-  m.def("pressure", [](const Log& log, py::object from, py::object to, std::size_t blocks) {
+  m.def("pressure", [](SharedLog& log, py::object from, py::object to, std::size_t blocks) {
     PressureOptions o;
     if (!from.is_none()) o.from = from.cast<double>();
     if (!to.is_none()) o.to = to.cast<double>();
     o.blocks = blocks;
-    const PressureReport p = released([&] { return measure_pressure(log, o); });
+    const PressureReport p = log.read("pressure()", [&](const Log& l) { return measure_pressure(l, o); });
     py::dict d;
     d["disks"] = p.disks, d["boundary"] = to_string(p.boundary), d["area"] = p.area;
     d["virial_area"] = p.virial_area, d["packing_fraction"] = p.packing_fraction;
@@ -164,12 +165,12 @@ void bind_analysis(py::module_& m) {
     d["warnings"] = p.warnings;
     return d;
   });
-  m.def("crater", [](const Log& log, py::object at, double energy_fraction, const std::string& bed) {
+  m.def("crater", [](SharedLog& log, py::object at, double energy_fraction, const std::string& bed) {
     CraterRequest r;
     if (!at.is_none()) r.at = time_argument(at, log.info().scalar, "crater(at)");
     r.energy_fraction = energy_fraction;
     r.bed_species = bed;
-    const CraterMeasurement c = released([&] { return measure_crater(log, r); });
+    const CraterMeasurement c = log.read("crater()", [&](const Log& l) { return measure_crater(l, r); });
     py::dict d;
     const auto& names = crater_metric_names();
     const std::vector<double> values = crater_metric_values(c);

@@ -18,6 +18,7 @@
 #include <optional>
 
 #include "bindings.hpp"
+#include "shared_log.hpp"
 #include "ede/collision_stats.hpp"
 
 namespace ede::python {
@@ -109,13 +110,15 @@ Event event_at(const unsigned char* rows, const EventRowLayout& l, std::size_t k
 
 // The derived columns of n rows: the impulse on disk i, m_i (v_i' - v_i), for pair, wall and segment
 // events (0 for the others), and the collision's statistics (collision_record).
+// False if Ctrl-C stopped it (asked every 2^16 rows).
 template <class T>
-void derive(unsigned char* rows, std::size_t n, const RowPlan& p, const std::vector<T>& mass,
-            const CollisionDisks* disks) {
-  if (p.impulse_x < 0 && !disks) return;  // nothing derived: the rows are as the library wrote them
+bool derive(unsigned char* rows, std::size_t n, const RowPlan& p, const std::vector<T>& mass,
+            const CollisionDisks* disks, SharedLog& shared) {
+  if (p.impulse_x < 0 && !disks) return true;  // nothing derived: the rows are as the library wrote them
   const EventRowLayout& l = p.layout;
   const std::size_t w = l.row_bytes;
   for (std::size_t k = 0; k < n; ++k) {
+    if (k % 65536 == 0 && shared.interrupted()) return false;
     if (p.impulse_x >= 0) {
       const auto kind = static_cast<EventKind>(get<std::uint8_t>(rows, w, k, l.kind));
       const std::int32_t i = get<std::int32_t>(rows, w, k, l.i);
@@ -133,6 +136,7 @@ void derive(unsigned char* rows, std::size_t n, const RowPlan& p, const std::vec
       for (int f = 0; f < 5; ++f) set(rows, w, k, p.stats + 8 * f, v[f]);
     }
   }
+  return true;
 }
 
 // The events as a numpy structured array written by the library straight into numpy's buffer
@@ -152,9 +156,22 @@ void check_out(const py::object& out, const py::object& dtype) {
     throw py::value_error("events(out=...): expected a writable, contiguous 1-D array (not a slice with a step)");
 }
 
+// The rows of n events must fit before numpy allocates them: Linux grants a request larger than the memory
+// left and kills the process when the rows are written.
+std::string rows_do_not_fit(const LogInfo& info, std::uint64_t n, std::size_t row_bytes) {
+  const double need = double(n) * double(row_bytes);
+  std::uint64_t left = 0;
+  if (!may_not_fit(need, left)) return "";
+  return info.path + ": events(): the range holds " + std::to_string(n) + " events, " + byte_text(need) +
+         " as rows of " + std::to_string(row_bytes) + " bytes, more than the " + byte_text(double(left)) +
+         " this process may still allocate: read it window by window (first=, last=, into one array with out=), "
+         "or ask for fewer fields";
+}
+
 template <class T>
-py::array events_in(const Log& log, const EventRequest& request, const py::object& out) {
-  const RowPlan plan = plan_rows<T>(request, log.info().rotates);
+py::array events_in(SharedLog& shared, const EventRequest& request, const py::object& out) {
+  const LogInfo& info = shared.info();
+  const RowPlan plan = plan_rows<T>(request, info.rotates);
   py::module_ np = py::module_::import("numpy");
   py::dict spec;
   spec["names"] = plan.names, spec["formats"] = plan.formats, spec["offsets"] = plan.offsets;
@@ -163,10 +180,9 @@ py::array events_in(const Log& log, const EventRequest& request, const py::objec
   if (!out.is_none()) check_out(out, dtype);
   py::array rows;
   unsigned char* data = nullptr;
-  std::uint64_t kept = 0;
-  std::string too_short;  // set by the allocator when `out` cannot hold the range
-  {
-    py::gil_scoped_release release;
+  // What the allocator refused (an `out` too short, rows that do not fit), raised once the library returns.
+  std::string too_short, no_memory;
+  const std::uint64_t kept = shared.read("events()", [&](const Log& log) -> Result<std::uint64_t> {
     std::vector<T> mass;
     if (request.impulse) mass = value_or_raise(log.state_at_event(0)).mass.values<T>();
     std::optional<CollisionDisks> disks;
@@ -182,18 +198,28 @@ py::array events_in(const Log& log, const EventRequest& request, const py::objec
           return nullptr;
         }
       } else {
-        rows = np.attr("empty")(n, dtype);
+        no_memory = rows_do_not_fit(info, n, plan.layout.row_bytes);
+        if (!no_memory.empty()) return nullptr;
+        try {
+          rows = np.attr("empty")(n, dtype);
+        } catch (py::error_already_set& e) {
+          if (!e.matches(PyExc_MemoryError)) throw;
+          no_memory = info.path + ": events(): numpy could not allocate " + std::to_string(n) + " rows of " +
+                      std::to_string(plan.layout.row_bytes) + " bytes (" + std::string(py::str(e.value())) +
+                      "): read the range window by window (first=, last=, out=)";
+          return nullptr;
+        }
       }
       data = static_cast<unsigned char*>(rows.mutable_data());
       return data;
     });
-    if (!written && !too_short.empty()) {
-      py::gil_scoped_acquire hold;
-      throw py::value_error(too_short);
-    }
-    kept = value_or_raise(std::move(written));
-    derive<T>(data, kept, plan, mass, disks ? &*disks : nullptr);
-  }
+    if (!too_short.empty()) throw py::value_error(too_short);
+    if (!no_memory.empty()) throw OutOfMemory(no_memory);
+    if (!written) return written;
+    if (!derive<T>(data, written.value(), plan, mass, disks ? &*disks : nullptr, shared))
+      return Error{info.path + ": events(): interrupted"};
+    return written;
+  });
   if (std::uint64_t(rows.shape(0)) != kept) rows = rows[py::slice(0, py::ssize_t(kept), 1)];
   return rows;
 }
@@ -203,7 +229,7 @@ py::array events_in(const Log& log, const EventRequest& request, const py::objec
 void bind_events(py::module_& m) {
   m.def(
       "events",
-      [](const Log& log, py::object t0, py::object t1, py::object first, py::object last, bool positions,
+      [](SharedLog& log, py::object t0, py::object t1, py::object first, py::object last, bool positions,
          bool before, bool impulse, bool collision, py::object out) {
         const ScalarKind scalar = log.info().scalar;
         EventRequest r;
@@ -224,14 +250,15 @@ void bind_events(py::module_& m) {
       py::arg("before"), py::arg("impulse"), py::arg("collision"), py::arg("out") = py::none());
   // For the benchmark: the library's own Log::for_each_event over the whole log with a callback that
   // does nothing (events per second): the ceiling of any binding built on it.
-  m.def("_time_for_each_event", [](const Log& log) {
-    py::gil_scoped_release release;
-    std::uint64_t n = 0;
-    const auto t0 = std::chrono::steady_clock::now();
-    Status s = log.for_each_event({}, [&](const Event&) { return ++n, true; });
-    const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (!s) throw Exception(s.error());
-    return dt > 0 ? double(n) / dt : 0.0;
+  m.def("_time_for_each_event", [](SharedLog& log) {
+    return log.read("_time_for_each_event()", [](const Log& l) -> Result<double> {
+      std::uint64_t n = 0;
+      const auto t0 = std::chrono::steady_clock::now();
+      Status s = l.for_each_event({}, [&](const Event&) { return ++n, true; });
+      const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      if (!s) return s.error();
+      return dt > 0 ? double(n) / dt : 0.0;
+    });
   });
 }
 

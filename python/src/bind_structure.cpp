@@ -5,6 +5,7 @@
 #include <complex>
 
 #include "bindings.hpp"
+#include "shared_log.hpp"
 
 namespace ede::python {
 
@@ -43,16 +44,16 @@ TransportOptions transport_of(const py::object& from, const py::object& to, doub
 }  // namespace
 
 void bind_structure(py::module_& m) {
-  m.def("pair_correlation", [](const Log& log, double r_max, std::size_t bins, double r_min, std::int32_t a,
+  m.def("pair_correlation", [](SharedLog& log, double r_max, std::size_t bins, double r_min, std::int32_t a,
                                std::int32_t b, py::object from, py::object to, std::size_t frames) {
     PairCorrelationOptions o;
     o.r_max = r_max, o.bins = bins, o.r_min = r_min, o.species_a = a, o.species_b = b;
     const FrameTimes f = frames_of(from, to, frames);
-    return gr_dict(released([&] { return pair_correlation(log, o, f); }));
+    return gr_dict(log.read("pair_correlation()", [&](const Log& l) { return pair_correlation(l, o, f); }));
   });
-  m.def("contact_values", [](const Log& log, py::object from, py::object to, std::size_t frames) {
+  m.def("contact_values", [](SharedLog& log, py::object from, py::object to, std::size_t frames) {
     const FrameTimes f = frames_of(from, to, frames);
-    const ContactValues c = released([&] { return contact_values(log, f); });
+    const ContactValues c = log.read("contact_values()", [&](const Log& l) { return contact_values(l, f); });
     py::dict d;
     const auto one = [](const ContactValue& v) {
       py::dict e;
@@ -63,42 +64,42 @@ void bind_structure(py::module_& m) {
     d["sigma"] = c.sigma, d["density"] = c.density, d["kT"] = c.kT, d["mass"] = c.mass;
     return d;
   });
-  m.def("structure_factor", [](const Log& log, double k_max, std::size_t shells, std::int32_t species,
+  m.def("structure_factor", [](SharedLog& log, double k_max, std::size_t shells, std::int32_t species,
                                py::object from, py::object to, std::size_t frames) {
     StructureFactorOptions o;
     o.k_max = k_max, o.shells = shells, o.species = species;
     const FrameTimes f = frames_of(from, to, frames);
-    const StructureFactor s = released([&] { return structure_factor(log, o, f); });
+    const StructureFactor s = log.read("structure_factor()", [&](const Log& l) { return structure_factor(l, o, f); });
     py::dict d;
     d["kx"] = vec(s.kx), d["ky"] = vec(s.ky), d["s"] = vec(s.s);
     d["k_lo"] = vec(s.k_lo), d["k_hi"] = vec(s.k_hi), d["s_shell"] = vec(s.s_shell);
     d["frames"] = s.frames, d["n"] = s.n;
     return d;
   });
-  m.def("bond_order", [](const Log& log, double r_max, std::size_t bins, py::object from, py::object to,
+  m.def("bond_order", [](SharedLog& log, double r_max, std::size_t bins, py::object from, py::object to,
                          std::size_t frames) {
     PairCorrelationOptions o;
     o.r_max = r_max, o.bins = bins;
     const FrameTimes f = frames_of(from, to, frames);
-    const BondOrder b = released([&] { return bond_order(log, o, f); });
+    const BondOrder b = log.read("bond_order()", [&](const Log& l) { return bond_order(l, o, f); });
     py::dict d = gr_dict(b.g6);
     std::vector<std::complex<double>> p(b.psi6);
     d["psi6"] = vec(p), d["global"] = b.global, d["mean_local"] = b.mean_local;
     return d;
   });
-  m.def("msd", [](const Log& log, py::object from, py::object to, double lag_step, double max_lag,
+  m.def("msd", [](SharedLog& log, py::object from, py::object to, double lag_step, double max_lag,
                   std::size_t origins, std::int32_t species, std::size_t groups) {
     const TransportOptions o = transport_of(from, to, lag_step, max_lag, origins, species, groups);
-    const MeanSquareDisplacement r = released([&] { return mean_square_displacement(log, o); });
+    const MeanSquareDisplacement r = log.read("msd()", [&](const Log& l) { return mean_square_displacement(l, o); });
     py::dict d;
     d["lag"] = vec(r.lag), d["msd"] = vec(r.msd), d["error"] = vec(r.error);
     d["disks"] = r.disks, d["origins"] = r.origins, d["diffusion"] = r.diffusion, d["diffusion_error"] = r.diffusion_error;
     return d;
   });
-  m.def("vacf", [](const Log& log, py::object from, py::object to, double lag_step, double max_lag,
+  m.def("vacf", [](SharedLog& log, py::object from, py::object to, double lag_step, double max_lag,
                    std::int32_t species, std::size_t groups) {
     const TransportOptions o = transport_of(from, to, lag_step, max_lag, 0, species, groups);
-    const VelocityAutocorrelation r = released([&] { return velocity_autocorrelation(log, o); });
+    const VelocityAutocorrelation r = log.read("vacf()", [&](const Log& l) { return velocity_autocorrelation(l, o); });
     py::dict d;
     d["lag"] = vec(r.lag), d["c"] = vec(r.c), d["error"] = vec(r.error), d["green_kubo"] = vec(r.green_kubo);
     d["disks"] = r.disks;

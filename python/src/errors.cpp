@@ -2,7 +2,9 @@
 // ede.CorruptLogError, ede.UnsupportedError; all subclasses of ede.Error), with the library's message
 // unchanged: a bad scene raises the very text ede-sim prints. The classes are defined in Python
 // (ede/_errors.py) so that they document themselves and can also subclass ValueError / OSError.
+// A request that does not fit in memory is Python's own MemoryError, with a message saying what was asked.
 #include "bindings.hpp"
+#include "shared_log.hpp"
 
 namespace ede::python {
 
@@ -28,6 +30,8 @@ void bind_errors(py::module_& m) {
     } catch (const Exception& e) {
       py::object cls = py::module_::import("ede._errors").attr(class_name(e.kind()));
       PyErr_SetString(cls.ptr(), e.what());
+    } catch (const OutOfMemory& e) {
+      PyErr_SetString(PyExc_MemoryError, e.what());
     }
   });
 }

@@ -42,7 +42,8 @@ def test_a_finished_run_runs_no_more(tmp_path):
     sim = ede.Simulation(SMALL_GAS, log=path)
     sim.advance_to(0.2)
     sim.finish()
-    sim.run()
+    with pytest.raises(ede.InvalidError, match=r"run\(\): this ede.Simulation was closed by finish\(\)"):
+        sim.run()
     assert sim.time == 0.2
     assert ede.open(path).end_time == 0.2
 

@@ -1,6 +1,7 @@
 // ede::Log, the public way to read a run: info, states at times and events, events with full data,
 // verify and diff, and exact numbers in and out.
 #include <catch2/catch.hpp>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 
@@ -230,6 +231,39 @@ TEST_CASE("Log::event_rows writes the columns' bits into packed rows, on any num
   REQUIRE_FALSE(refused);
   CHECK_FALSE(called);
   CHECK(refused.error().message.find("does not fit a row of 73 bytes") != std::string::npos);
+}
+
+// Log::set_interrupt_check: a seek or walk stops at a chunk when asked, says so, and the Log reads on as if
+// nothing had happened (the binding's Ctrl-C, python/src/shared_log.hpp).
+TEST_CASE("Log::set_interrupt_check stops seeks and walks at a chunk and leaves the Log usable", "[replay][log][interrupt]") {
+  ede::Log log = logged("log-interrupt.ede", {{"log.chunk_events=16"}, {"log.keyframe_interval=512"}});
+  const ede::Log fresh = ede::Log::open(log.info().path).value();
+  const std::uint64_t end = log.info().events;
+  REQUIRE(end > 1000);  // a seek to the end replays ~20 chunks from its keyframe; a walk has ~3 pieces
+  std::atomic<int> asked{0};
+  std::atomic<int> allow{3};  // chunks decoded before the check says stop
+  log.set_interrupt_check([&] { return ++asked > allow; });
+
+  const auto seek = log.state_at_event(end);
+  REQUIRE_FALSE(seek);
+  CHECK(seek.error().message.find("interrupted at event") != std::string::npos);
+  CHECK(asked == 4);  // asked before each chunk: three decoded, the fourth refused
+
+  asked = 0;
+  std::vector<unsigned char> rows;
+  ede::EventRowLayout l;
+  l.index = 0, l.row_bytes = 8;
+  const auto walk = log.event_rows({}, l, [&](std::uint64_t r) { return rows.resize(r * 8), static_cast<void*>(rows.data()); }, 2);
+  REQUIRE_FALSE(walk);
+  CHECK(walk.error().message.find("interrupted") != std::string::npos);
+
+  allow = 1 << 30;  // no longer interrupted: the same calls give what a fresh Log gives
+  const ede::State a = log.state_at_event(end).value(), b = fresh.state_at_event(end).value();
+  CHECK(a.x.values<double>() == b.x.values<double>());
+  CHECK(a.vy.values<double>() == b.vy.values<double>());
+  const ede::State mid = log.state_at(0.5).value(), mid_fresh = fresh.state_at(0.5).value();
+  CHECK(mid.x.values<double>() == mid_fresh.x.values<double>());
+  CHECK(log.event_columns({}, false, false, 2).value().index == fresh.event_columns({}).value().index);
 }
 
 // A walk that writes neither positions nor velocities before computes neither (EventExtras); what an event

@@ -129,6 +129,12 @@ class Log {
   static Result<Log> open(const std::string& path, const LogLimits& limits = {});
 
   const LogInfo& info() const;
+  // Lets a caller stop a long read (a binding's Ctrl-C): the states' seeks and the event walks of this Log
+  // and its copies ask `interrupted` before each chunk they decode, from the thread decoding it (an event
+  // walk asks from several threads at once); when it returns true they stop there and return an Error
+  // saying so. The Log stays usable: the next call reads as if nothing had happened. Set it while no call
+  // is in progress. (Analyses and verify make their own replays and do not ask.)
+  void set_interrupt_check(std::function<bool()> interrupted);
   // The effective scene the log records, loaded again.
   Result<Scene> scene() const;
 

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <memory>
+#include <utility>
 
 #include "core/scalar_dispatch.hpp"
 #include "core/state_of.hpp"
@@ -66,6 +67,8 @@ Result<Log> Log::open(const std::string& path, const LogLimits& limits) {
 }
 
 const LogInfo& Log::info() const { return impl_->info; }
+
+void Log::set_interrupt_check(std::function<bool()> interrupted) { impl_->interrupted = std::move(interrupted); }
 
 Result<Scene> Log::scene() const { return parse_scene_text(impl_->info.scene_text, impl_->info.scene_name); }
 

@@ -11,6 +11,8 @@
 #include <initializer_list>
 #include <limits>
 #include <memory>
+#include <new>
+#include <system_error>
 #include <thread>
 
 #include "core/scalar_dispatch.hpp"
@@ -200,7 +202,7 @@ Result<std::uint64_t> write_events(const LogImpl& impl, Replay<T>& cached, const
   std::vector<Status> status(n, Ok{});
   // Piece 0 continues the cached replay (a from_time seek left it at `first`); the others replay from
   // their own keyframe on a fresh Replay over the same reader (LogReader is read-only after open).
-  const auto run_piece = [&](std::size_t k) {
+  const auto write_piece = [&](std::size_t k) {
     Replay<T>* r = &cached;
     std::unique_ptr<Replay<T>> own;
     if (k > 0) {
@@ -208,6 +210,7 @@ Result<std::uint64_t> write_events(const LogImpl& impl, Replay<T>& cached, const
       if (!made) return void(status[k] = made.error());
       own = std::move(made).value();
       r = own.get();
+      r->set_interrupt_check(&impl.interrupted);
     }
     const std::size_t offset = bounds[k] - sp.first;
     // Counted in a local, stored once: written[k] and written[k + 1] share a cache line, and incrementing
@@ -221,10 +224,28 @@ Result<std::uint64_t> write_events(const LogImpl& impl, Replay<T>& cached, const
     }, sink.extras());
     written[k] = count;
   };
-  std::vector<std::thread> workers;
-  for (std::size_t k = 1; k < n; ++k) workers.emplace_back(run_piece, k);
-  run_piece(0);
-  for (std::thread& w : workers) w.join();
+  const auto run_piece = [&](std::size_t k) noexcept {
+    try {
+      write_piece(k);
+    } catch (const std::bad_alloc&) {  // in a worker thread an escaping exception would end the process
+      status[k] = Error{impl.info.path + ": not enough memory to replay events " + std::to_string(bounds[k]) +
+                        " to " + std::to_string(bounds[k + 1]) + ": ask for fewer events at a time (first/last)"};
+    }
+  };
+  {
+    std::vector<std::jthread> workers;  // joined however this block is left
+    std::vector<std::size_t> here;      // pieces no thread could be started for (a thread or memory limit)
+    workers.reserve(n), here.reserve(n);
+    for (std::size_t k = 1; k < n; ++k) {
+      try {
+        workers.emplace_back(run_piece, k);
+      } catch (const std::system_error&) {
+        here.push_back(k);
+      }
+    }
+    run_piece(0);
+    for (const std::size_t k : here) run_piece(k);
+  }
   // The events kept are a prefix: a piece cut short by t1 is followed by pieces that stopped at their
   // first event (times never decrease).
   std::uint64_t kept = 0;

@@ -275,6 +275,9 @@ Status Replay<T>::advance(std::uint64_t target_event, const T* until_time,
       if (!c.decoder || c.decoder->done()) {
         if (c.decoder)
           if (Status s = c.decoder->check_consumed(); !s) return Error{log_->path() + ": " + s.error().message};
+        if (interrupted_ && *interrupted_ && (*interrupted_)())
+          return Error{log_->path() + ": interrupted at event " + std::to_string(applied_) +
+                       " (the log is unchanged; read it again to go on)"};
         if (Status s = open_chunk(); !s) return s;
       }
       if (!c.decoder->decode(state_, c.next)) return Error{log_->path() + ": " + c.decoder->error_message()};

@@ -86,6 +86,10 @@ class Replay {
   T final_time() const;                                     // the time the run reached (complete logs), else last event
   // What a resumable keyframe (index into log->keyframes()) stores; an error for any other keyframe.
   Result<StoredRebuildPoint<T>> rebuild_point(std::size_t keyframe) const;
+  // Asked before each chunk is decoded (Log::set_interrupt_check): when it returns true, the seek or walk
+  // stops at that chunk boundary, where every earlier event is applied and the replay stays usable, and
+  // returns an Error saying it was interrupted. nullptr or an empty function: never asked.
+  void set_interrupt_check(const std::function<bool()>* interrupted) { interrupted_ = interrupted; }
 
  private:
   explicit Replay(std::shared_ptr<const LogReader> log);
@@ -112,6 +116,7 @@ class Replay {
   T last_event_time_initial_{};  // the first keyframe's time: the end of a log with no chunk
   std::uint64_t applied_ = 0;
   bool loaded_ = false;
+  const std::function<bool()>* interrupted_ = nullptr;
 };
 
 }  // namespace ede
