@@ -6,6 +6,7 @@
 #include "replay/replay.hpp"
 #include "run/run_checks.hpp"
 #include "run/run_start.hpp"
+#include "run/scale_checks.hpp"
 #include "setup/setup.hpp"
 
 namespace ede {
@@ -21,6 +22,7 @@ Result<RunSetup> setup_new_run(const Scene& scene) {
     r.options.rotation = r.options.rotation || !r.initial.omega.empty();  // a rough state keeps its spins
     return r;
   }
+  if (Status s = check_scene_scales(scene); !s) return s.error();  // before setup computes with them
   auto initial = build_initial_state(scene);
   if (!initial) return initial.error();
   if (Status s = check_run_can_finish(scene, initial.value()); !s) return s.error();
