@@ -1,9 +1,15 @@
 // Damaged logs: truncated anywhere, a bit flipped anywhere, another file, a newer version. The reader
 // must answer with a clear error or read what is intact; whatever it reads must be right: a damaged log
-// either fails or yields exactly the original's content (checked with the content digest).
+// either fails or yields exactly the original's content (checked with the content digest). A good log read
+// without the memory a record needs is said to be out of memory, never corrupted.
+#include <malloc.h>
 #include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <catch2/catch.hpp>
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 
@@ -200,4 +206,61 @@ TEST_CASE("a forged content size does not make the reader allocate it", "[log][r
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   CHECK(usage.ru_maxrss < 512 * 1024);  // kilobytes: far below the 3.75 GiB the frame claims
+}
+
+TEST_CASE("a good log read without the memory for a record is out of memory and not corrupted", "[log][robust]") {
+  // issue 36: a good 200 000-disk log under `ulimit -v` was called "corrupted record (Allocation error: not
+  // enough memory)". Here a keyframe of 40 000 disks (~2 MB decompressed) is read in a child process whose
+  // address space may not grow at all (its limit is what it holds now, its heap is filled, and malloc
+  // takes anything above 64 KiB from new mappings): the reader must say out of memory, with what the
+  // record needed.
+  const InitialState s = lattice_gas(200, 0.001, 1.0, 92);
+  EngineOptions o;
+  o.boundary = BoundaryKind::Periodic;
+  o.stop.events = 10;
+  const std::string path = run_logged<double>(s, o, "big-keyframe.ede").path;
+  auto log = open_log(path);
+  const LogRecordRef kf = log->keyframes().front();
+  REQUIRE(log->load_message(kf.offset, kf.payload_size).ok());  // with memory, the record reads
+
+  int out[2];
+  REQUIRE(pipe(out) == 0);
+  const pid_t child = fork();
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    mallopt(M_MMAP_THRESHOLD, 64 * 1024);
+    std::string message(4096, ' ');  // allocated before the cap
+    long pages = 0, resident = 0;
+    if (std::FILE* f = std::fopen("/proc/self/statm", "r")) {
+      if (std::fscanf(f, "%ld %ld", &pages, &resident) != 2) pages = 0;
+      std::fclose(f);
+    }
+    const rlim_t held = rlim_t(pages) * rlim_t(sysconf(_SC_PAGESIZE));
+    const rlimit cap{held, held};
+    setrlimit(RLIMIT_AS, &cap);
+    // The heap's free chunks (earlier tests freed large buffers into it) are filled too, all but a few
+    // pages kept for the message's small strings.
+    std::vector<void*> filler;
+    filler.reserve(1 << 20);
+    for (void* b; filler.size() < filler.capacity() && (b = std::malloc(4096)) != nullptr;) filler.push_back(b);
+    for (int k = 0; k < 16 && !filler.empty(); ++k) std::free(filler.back()), filler.pop_back();
+    auto words = log->load_message(kf.offset, kf.payload_size);
+    message.assign(words.ok() ? "read" : words.error().message);
+    (void)!write(out[1], message.data(), message.size());
+    _exit(0);
+  }
+  close(out[1]);
+  std::string message;
+  char buffer[512];
+  for (ssize_t n; (n = read(out[0], buffer, sizeof buffer)) > 0;) message.append(buffer, std::size_t(n));
+  close(out[0]);
+  int status = 0;
+  waitpid(child, &status, 0);
+  INFO(message);
+  CHECK((WIFEXITED(status) && WEXITSTATUS(status) == 0));  // no crash on a failed allocation
+  CHECK(message.find("big-keyframe.ede (byte ") != std::string::npos);
+  CHECK(message.find("out of memory while reading this record") != std::string::npos);
+  CHECK(message.find("MiB decompressed") != std::string::npos);
+  CHECK(message.find("the log is not damaged") != std::string::npos);
+  CHECK(message.find("corrupt") == std::string::npos);
 }

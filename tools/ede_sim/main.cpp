@@ -78,7 +78,8 @@ int exit_status(ede::RunStatus status) {
   switch (status) {
     case ede::RunStatus::Stalled:
     case ede::RunStatus::Collapsed: return 3;
-    case ede::RunStatus::NonFinite: return 4;
+    case ede::RunStatus::NonFinite:
+    case ede::RunStatus::Inexact: return 4;
     default: return 0;
   }
 }

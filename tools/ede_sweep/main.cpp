@@ -7,12 +7,16 @@
 //   mpirun -n K ede-sweep SWEEP.toml
 //
 // Thin: loads the sweep, checks the base scene and the quantities before anything runs, picks the pool
-// (MPI when started by mpirun with more than one rank, else local processes), writes the tables.
+// (MPI when started by mpirun with more than one rank, else local processes), writes the tables (kept
+// current while it runs). Every point's scene is checked, and the results folder locked, before any run
+// (tools/sweep/sweep_inputs.hpp).
 // `--child K` (hidden) is the process of one run. Exit status: 0 when every run ended ok, 3 when some did
 // not (the tables say which and why), 1 on a bad sweep file or an I/O error, 2 on a bad command line,
 // 130/143 when interrupted (the finished runs are in the tables; running again goes on).
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <cstdio>
+#include <memory>
 #include <filesystem>
 #include <thread>
 
@@ -25,6 +29,7 @@
 #include "report_error.hpp"
 #include "results_table.hpp"
 #include "sweep.hpp"
+#include "sweep_inputs.hpp"
 #include "tool_main.hpp"
 
 namespace {
@@ -39,6 +44,7 @@ struct Options {
   bool dry_run = false, no_timing = false, quiet = false;
   double pilot_seconds = 1.0;
   long long child = -1;
+  std::string inputs;  // --child: the parent's inputs_digest
 };
 
 int fail(const std::string& message) {
@@ -56,7 +62,9 @@ ede::Result<Sweep> load(const Options& opt) {
   s.results = opt.out_dir.empty() ? s.spec.results : opt.out_dir;
   s.runs = expand_runs(s.spec);
   s.progress = !opt.quiet;
-  s.child_argv = {std::filesystem::read_symlink("/proc/self/exe").string(), opt.sweep_path, "--out-dir", s.results, "-q"};
+  s.inputs = inputs_digest(s.spec);
+  s.child_argv = {std::filesystem::read_symlink("/proc/self/exe").string(), opt.sweep_path, "--out-dir", s.results,
+                  "-q", "--inputs", s.inputs};
   for (const std::string& o : opt.overrides) s.child_argv.insert(s.child_argv.end(), {"--set", o});
   return s;
 }
@@ -96,11 +104,50 @@ ede::Status plot(const Sweep& s, const Options& opt) {
   return ede::tools::run_plot_script_to("plot_sweep.py", args, opt.plot_path);
 }
 
+// Keeps runs.csv and points.csv current while the sweep runs (at most every 2 s, and at the start: every run
+// pending), so that a sweep killed mid-way (kill -9, a rank lost under mpirun, a full disk) leaves tables
+// saying which runs finished and which are missing and why. A failed write is kept for the closing message.
+struct TableKeeper {
+  const Sweep& s;
+  bool timing;
+  std::chrono::steady_clock::time_point last{};
+  bool written = false;
+  std::string error;
+  void operator()(const std::vector<RunRow>& rows) {
+    const auto now = std::chrono::steady_clock::now();
+    if (written && now - last < std::chrono::seconds(2)) return;
+    written = true;
+    last = now;
+    if (ede::Status w = write_tables(s, rows, timing); !w) error = w.error().message;
+  }
+};
+
+// The closing message when the final tables cannot be written: which runs are missing, and why.
+int tables_not_written(const std::vector<RunRow>& rows, const std::string& why) {
+  std::string m = why + "; the tables are not up to date. " + rows_summary(rows) + ".";
+  std::size_t listed = 0;
+  for (const RunRow& r : rows)
+    if (r.status != "ok" && listed++ < 20) m += "\n  " + r.name + ": " + r.status + (r.error.empty() ? "" : ": " + r.error);
+  return fail(m + "\nFix: free space in the results folder, then run the sweep again (finished runs are reused).");
+}
+
 int sweep_main(Sweep& s, const Options& opt, bool mpi) {
   std::error_code ec;
   std::filesystem::create_directories(runs_dir(s), ec);
   if (ec) return fail(runs_dir(s) + ": cannot create the results folder: " + ec.message());
+  std::unique_ptr<ResultsLock> lock;
+  if (!mpi || mpi_rank() == 0) {
+    auto taken = ResultsLock::take(s.results);
+    if (!taken) {
+      fail(taken.error().message);
+      if (mpi) mpi_abort(1);
+      return 1;
+    }
+    lock = std::move(taken).value();
+  }
   install_stop_handler();
+  TableKeeper keeper{s, !opt.no_timing, {}, false, {}};
+  s.on_rows = [&keeper](const std::vector<RunRow>& rows) { keeper(rows); };
   std::vector<RunRow> rows;
   if (mpi) {
     auto got = run_mpi(s);
@@ -109,7 +156,7 @@ int sweep_main(Sweep& s, const Options& opt, bool mpi) {
   } else {
     rows = run_local(s, opt.jobs);
   }
-  if (ede::Status w = write_tables(s, rows, !opt.no_timing); !w) return fail(w.error().message);
+  if (ede::Status w = write_tables(s, rows, !opt.no_timing); !w) return tables_not_written(rows, w.error().message);
   std::printf("%s\nruns.csv and points.csv in %s\n", rows_summary(rows).c_str(), s.results.c_str());
   if (!opt.plot_path.empty())
     if (ede::Status p = plot(s, opt); !p) return fail(p.error().message);
@@ -141,6 +188,7 @@ int run(int argc, char** argv) {
                "--plot: shade the hard-disk liquid-hexatic coexistence (0.700-0.716) and hexatic (0.716-0.720) ranges");
   app.add_flag("-q,--quiet", opt.quiet, "no line per finished run");
   app.add_option("--child", opt.child, "(internal) run number K of the sweep in this process")->group("");
+  app.add_option("--inputs", opt.inputs, "(internal) the digest of the sweep's inputs when it started")->group("");
   ede::tools::add_version_flags(app, "ede-sweep");
 
   const bool mpi = launched_by_mpirun() && [&] {
@@ -160,6 +208,12 @@ int run(int argc, char** argv) {
   };
   if (const auto stop = ede::tools::parse_command_line(app, argc, argv)) return finish(*stop);
   auto loaded = load(opt);
+  if (opt.child >= 0 && !opt.inputs.empty() && (!loaded || loaded.value().inputs != opt.inputs)) {
+    // The parent loaded this very command line: what changed since is the sweep file or its scene.
+    ede::tools::report_error("ede-sweep", opt.sweep_path + " or its scene changed since the sweep started: run " +
+                                              std::to_string(opt.child) + " is not run");
+    return kInputsChanged;
+  }
   if (!loaded) return finish(mpi_rank() == 0 ? fail(loaded.error().message) : 1);
   Sweep& s = loaded.value();
   if (opt.child >= 0) {
@@ -170,6 +224,7 @@ int run(int argc, char** argv) {
   for (const std::string& o : s.spec.base_overrides) base.push_back({o});
   if (auto scene = ede::load_scene_file(s.spec.scene_path, base); !scene)
     return finish(mpi_rank() == 0 ? fail("the sweep's base scene: " + scene.error().message) : 1);
+  if (ede::Status points = check_points(s); !points) return finish(mpi_rank() == 0 ? fail(points.error().message) : 1);
   if (opt.dry_run) {
     if (mpi_rank() == 0) std::printf("%s", dry_run_report(s, mpi ? std::size_t(std::max(1, world - 1)) : opt.jobs, opt.pilot_seconds).c_str());
     return finish(0);

@@ -27,12 +27,9 @@ constexpr int kResult = 1, kWork = 2;
 void send_index(long long k, int to) { MPI_Send(&k, 1, MPI_LONG_LONG, to, kWork, MPI_COMM_WORLD); }
 
 std::vector<RunRow> hand_out(const Sweep& s, int size) {
-  std::vector<RunRow> rows(s.runs.size());
-  for (std::size_t k = 0; k < rows.size(); ++k) {  // until its row comes back
-    rows[k].index = k, rows[k].name = s.runs[k].name, rows[k].status = "lost";
-    rows[k].values.assign(s.spec.collect.size(), std::numeric_limits<double>::quiet_NaN());
-    rows[k].error = "no readable row came back from the worker that ran it: run the sweep again";
-  }
+  std::vector<RunRow> rows;
+  for (std::size_t k = 0; k < s.runs.size(); ++k) rows.push_back(pending_row(s, k));  // until its row comes back
+  if (s.on_rows) s.on_rows(rows);
   std::size_t next = 0, done = 0;
   int working = size - 1;
   while (working > 0) {
@@ -47,6 +44,7 @@ std::vector<RunRow> hand_out(const Sweep& s, int size) {
       if (row && row.value().index < rows.size()) {
         rows[row.value().index] = row.value();
         report_run(s, rows[row.value().index], ++done);
+        if (s.on_rows) s.on_rows(rows);
       }
     }
     if (next < s.runs.size() && !stop_requested()) {
@@ -56,6 +54,11 @@ std::vector<RunRow> hand_out(const Sweep& s, int size) {
       --working;
     }
   }
+  for (std::size_t k = 0; k < next; ++k)  // handed out, and its worker came back without a readable row
+    if (rows[k].status == "pending") {
+      rows[k].status = "lost";
+      rows[k].error = "no readable row came back from the worker that ran it: run the sweep again";
+    }
   for (std::size_t k = next; k < s.runs.size(); ++k) {  // not handed out (interrupted)
     rows[k].status = "interrupted";
     rows[k].error = "not run: the sweep was interrupted";
@@ -82,6 +85,8 @@ int mpi_rank() {
 
 void mpi_finish() { MPI_Finalize(); }
 
+void mpi_abort(int code) { MPI_Abort(MPI_COMM_WORLD, code); }
+
 std::optional<std::vector<RunRow>> run_mpi(const Sweep& s) {
   int size = 1;
   MPI_Comm_size(MPI_COMM_WORLD, &size);
@@ -104,6 +109,7 @@ Result<int> mpi_start(int&, char**&) {
 }
 int mpi_rank() { return 0; }
 void mpi_finish() {}
+void mpi_abort(int) {}
 std::optional<std::vector<RunRow>> run_mpi(const Sweep&) { return std::nullopt; }
 
 #endif

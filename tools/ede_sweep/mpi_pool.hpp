@@ -3,8 +3,9 @@
 // do each run with execute_run (a child process on their own node, logs under their results folder) and
 // send the row back as text; rank 0 alone writes the tables, so no shared file system is needed.
 // A rank that dies ends the whole job (OpenMPI aborts every rank when one dies: MPI offers no portable
-// recovery); the rows already written and the logs stay, and running the sweep again reuses the finished
-// runs and resumes the killed ones (docs/sweeps.md). Rejected: static blocks of runs per rank (runs of a
+// recovery); the rows already written and the logs stay, the tables rank 0 keeps current (Sweep::on_rows)
+// say which runs were still pending, and running the sweep again reuses the finished runs and resumes the
+// killed ones (docs/sweeps.md). Rejected: static blocks of runs per rank (runs of a
 // sweep differ in length by orders of magnitude) and MPI-IO for the tables (the table is small).
 #pragma once
 
@@ -22,6 +23,8 @@ bool launched_by_mpirun();
 Result<int> mpi_start(int& argc, char**& argv);
 int mpi_rank();
 void mpi_finish();
+// Ends every rank of the job (rank 0 refusing the sweep while the workers wait for work).
+void mpi_abort(int code);
 
 // Rank 0: hands out the runs and returns every row. Other ranks: work until told to stop, return nothing.
 std::optional<std::vector<RunRow>> run_mpi(const Sweep& s);

@@ -1,7 +1,10 @@
 // Writing runs.csv and points.csv (see results_table.hpp).
 #include "results_table.hpp"
 
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <map>
 
@@ -19,11 +22,15 @@ std::string cell(const std::string& s) {
 }
 
 Status write_file(const std::string& path, const std::string& text) {
+  // A temporary file renamed into place: a failed write (a full disk) leaves the last complete table.
   const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out << text;
-    if (!out.flush()) return Error{tmp + ": cannot write (disk full?)"};
+  std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+  out << text;
+  out.close();
+  if (!out) {
+    const std::string why = std::strerror(errno);
+    std::remove(tmp.c_str());
+    return Error{path + ": cannot write the table (" + why + ")", ErrorKind::Io};
   }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) return Error{path + ": cannot rename " + tmp + " to it"};
   return Ok{};

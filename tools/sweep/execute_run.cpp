@@ -1,8 +1,16 @@
 // One run, from a worker's side (see sweep.hpp): reuse, or a child process with retries.
 //
 // Reuse needs all of: the row file, with the same overrides and a final status, and the log it names,
-// complete, whose content digest (a replay of the whole log: what it says, not how it is stored) equals
-// the row's. Anything less and the run is done again (its log resumed if a killed process left one).
+// complete, holding the scene the run would load now (an edited base scene makes old rows stale), whose
+// content digest (a replay of the whole log: what it says, not how it is stored) equals the row's.
+// Anything less and the run is done again (its log resumed if a killed process left one).
+// A child that finds the sweep's inputs changed (sweep_inputs.hpp) makes every later run of this
+// execution "changed" at once: they would all be refused the same way.
+#include <sys/statvfs.h>
+
+#include <atomic>
+#include <csignal>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -11,8 +19,45 @@
 #include "stop_signal.hpp"
 #include "ede/number_text.hpp"
 #include "sweep.hpp"
+#include "sweep_inputs.hpp"
 
 namespace ede::sweep {
+
+namespace {
+
+std::atomic<bool> g_inputs_changed{false};
+
+std::string inputs_changed_error(const Sweep& s) {
+  return "not run: " + s.spec.path + " or its scene " + s.spec.scene_path +
+         " changed while the sweep ran, so this run would not be the one planned. Fix: run the sweep again "
+         "(finished runs are reused where they still match)";
+}
+
+// The last line of the child's stderr, or what the disk says when there is none (a full disk keeps even
+// that from being written).
+std::string why_no_result(const Sweep& s, const std::string& err_path) {
+  std::ifstream in(err_path);
+  std::string line, last;
+  while (std::getline(in, line))
+    if (!line.empty()) last = line;
+  if (!last.empty()) return ": " + last.substr(0, 2000);
+  struct statvfs fs {};
+  if (::statvfs(runs_dir(s).c_str(), &fs) == 0)
+    return " and wrote nothing on stderr; " + runs_dir(s) + " has " +
+           std::to_string((unsigned long long)fs.f_bavail * fs.f_frsize) + " bytes free now (a full disk?)";
+  return " and wrote nothing on stderr";
+}
+
+}  // namespace
+
+RunRow pending_row(const Sweep& s, std::size_t k) {
+  RunRow row;
+  row.index = k, row.name = s.runs[k].name, row.overrides = s.runs[k].overrides, row.status = "pending";
+  row.values.assign(s.spec.collect.size(), std::numeric_limits<double>::quiet_NaN());
+  row.error = "not finished when this table was written: the sweep was still running, or was stopped (killed, a "
+              "rank lost, the disk full) before this run ended. Fix: run the sweep again to finish it";
+  return row;
+}
 
 std::string runs_dir(const Sweep& s) { return s.runs_folder.empty() ? s.results : s.results + "/" + s.runs_folder; }
 std::string log_path(const Sweep& s, const PlannedRun& r) { return runs_dir(s) + "/" + r.name + ".ede"; }
@@ -38,6 +83,8 @@ std::optional<RunRow> reusable_row(const Sweep& s, const PlannedRun& r) {
     return std::nullopt;
   auto log = Log::open(log_path(s, r));
   if (!log || !log.value().info().complete) return std::nullopt;
+  auto scene = scene_of(s, r);
+  if (!scene || scene.value().source_text != log.value().info().scene_text) return std::nullopt;
   auto digest = log.value().content_digest();
   if (!digest || digest.value() != row.value().digest) return std::nullopt;
   RunRow out = std::move(row).value();
@@ -49,6 +96,12 @@ std::optional<RunRow> reusable_row(const Sweep& s, const PlannedRun& r) {
 RunRow execute_run(const Sweep& s, std::size_t k) {
   const PlannedRun& r = s.runs[k];
   if (auto row = reusable_row(s, r)) return *row;
+  if (g_inputs_changed) {
+    RunRow none = pending_row(s, k);
+    none.status = "changed";
+    none.error = inputs_changed_error(s);
+    return none;
+  }
   if (stop_requested()) {
     RunRow none;
     none.index = r.index, none.name = r.name, none.overrides = r.overrides, none.status = "interrupted";
@@ -84,6 +137,13 @@ RunRow execute_run(const Sweep& s, std::size_t k) {
       return std::move(written).value();
     }
     row.wall_seconds = end.value().wall_seconds;
+    if (!end.value().signalled && end.value().exit_status == kInputsChanged) {
+      g_inputs_changed = true;
+      no_log(row);
+      row.status = "changed";
+      row.error = inputs_changed_error(s);
+      return row;
+    }
     if (stop_requested()) {
       row.status = "interrupted";
       row.error = "the sweep was interrupted (its log is kept: a rerun resumes it)";
@@ -96,10 +156,13 @@ RunRow execute_run(const Sweep& s, std::size_t k) {
                   " s (its log is kept: a rerun resumes it; raise timeout = ... to let it finish)";
       return row;  // a stalled run is not retried: it would stall again
     }
+    const int code = end.value().signalled ? end.value().exit_status - 128 : end.value().exit_status;
     row.status = end.value().signalled ? "killed" : "crashed";
-    row.error = "the run's process " + std::string(end.value().signalled ? "was killed by signal " : "exited with status ") +
-                std::to_string(end.value().signalled ? end.value().exit_status - 128 : end.value().exit_status) +
-                " without a result (see " + err_path + ")";
+    row.error = "the run's process " +
+                (end.value().signalled ? "was killed by signal " + std::to_string(code) + " (" + strsignal(code) + ")"
+                                       : "exited with status " + std::to_string(code)) +
+                " without a result, " + std::to_string(attempt + 1) + " time" + (attempt ? "s" : "") + " (stderr in " +
+                err_path + ")" + why_no_result(s, err_path);
   }
   return no_log(row);
 }

@@ -19,17 +19,21 @@ void report_run(const Sweep& s, const RunRow& row, std::size_t done) {
 }
 
 std::vector<RunRow> run_local(const Sweep& s, std::size_t jobs) {
-  std::vector<RunRow> rows(s.runs.size());
+  std::vector<RunRow> rows;
+  for (std::size_t k = 0; k < s.runs.size(); ++k) rows.push_back(pending_row(s, k));
   std::atomic<std::size_t> next{0};
-  std::mutex report;
+  std::mutex report;  // guards rows: on_rows reads them all
   std::size_t done = 0;
+  if (s.on_rows) s.on_rows(rows);
   const auto work = [&] {
     for (;;) {
       const std::size_t k = next++;
       if (k >= s.runs.size()) return;
-      rows[k] = execute_run(s, k);
+      RunRow row = execute_run(s, k);
       const std::lock_guard<std::mutex> lock(report);
+      rows[k] = std::move(row);
       report_run(s, rows[k], ++done);
+      if (s.on_rows) s.on_rows(rows);
     }
   };
   std::vector<std::thread> workers;

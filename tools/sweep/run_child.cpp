@@ -17,6 +17,7 @@
 #include "ede/ede.hpp"
 #include "interrupt.hpp"
 #include "sweep.hpp"
+#include "sweep_inputs.hpp"
 
 namespace ede::sweep {
 
@@ -30,6 +31,7 @@ std::string status_word(RunStatus s) {
     case RunStatus::Collapsed: return "collapsed";
     case RunStatus::CameToRest: return "came to rest";
     case RunStatus::NonFinite: return "non-finite";
+    case RunStatus::Inexact: return "inexact";
     default: return to_string(s);
   }
 }
@@ -50,10 +52,11 @@ bool can_resume(const std::string& path, const Scene& scene) {
 
 // A finished run of the same point whose row was written for another `collect`: its log is complete and
 // still the one the row's digest describes, so measuring it again is enough.
-std::optional<std::pair<RunRow, RunSummary>> finished_run(const Sweep& s, const PlannedRun& r, const Log& log) {
+std::optional<std::pair<RunRow, RunSummary>> finished_run(const Sweep& s, const PlannedRun& r, const Log& log,
+                                                         const Scene& scene) {
   auto row = read_row_file(row_path(s, r));
   if (!row || row.value().overrides != r.overrides || !final_status(row.value().status) || row.value().digest.empty() ||
-      !log.info().complete)
+      !log.info().complete || log.info().scene_text != scene.source_text)
     return std::nullopt;
   auto summary = summary_from_json(row.value().summary);
   if (!summary) return std::nullopt;
@@ -101,9 +104,11 @@ int run_child(const Sweep& s, std::size_t k) {
     if (!w) std::fprintf(stderr, "ede-sweep: %s\n", w.error().message.c_str());
     return w ? 0 : 1;
   };
+  auto scene = scene_of(s, r);
+  if (!scene) return finish("failed", scene.error().message);
   if (std::filesystem::exists(path))
     if (auto old = Log::open(path))
-      if (auto done = finished_run(s, r, old.value())) {
+      if (auto done = finished_run(s, r, old.value(), scene.value())) {
         auto m = measure(s, r, path, old.value(), done->second, false);
         if (!m) return finish("failed", "measuring the log: " + m.error().message);
         row.values = m.value().values;
@@ -112,10 +117,6 @@ int run_child(const Sweep& s, std::size_t k) {
         row.summary = done->first.summary;
         return finish(done->first.status, done->first.error);
       }
-  std::vector<Override> overrides;
-  for (const std::string& o : r.overrides) overrides.push_back({o});
-  auto scene = load_scene_file(s.spec.scene_path, overrides);
-  if (!scene) return finish("failed", scene.error().message);
   auto sim = can_resume(path, scene.value()) ? Simulation::resume(path) : Simulation::create(scene.value(), {path, {}});
   if (!sim) return finish("failed", sim.error().message);
   RunStatus status;

@@ -1,7 +1,9 @@
 // Row files as JSON (see run_row.hpp).
 #include "run_row.hpp"
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <algorithm>
 #include <fstream>
@@ -60,10 +62,13 @@ Result<RunRow> row_from_json(const std::string& text, const std::string& where) 
 
 Status write_row_file(const std::string& path, const RunRow& row) {
   const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out << row_to_json(row) << "\n";
-    if (!out.flush()) return Error{tmp + ": cannot write the run's row (disk full?)"};
+  std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+  out << row_to_json(row) << "\n";
+  out.close();
+  if (!out) {
+    const std::string why = std::strerror(errno);
+    std::remove(tmp.c_str());
+    return Error{path + ": cannot write the run's row (" + why + ")", ErrorKind::Io};
   }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) return Error{path + ": cannot rename " + tmp + " to it"};
   return Ok{};

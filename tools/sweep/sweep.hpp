@@ -51,7 +51,16 @@ struct Sweep {
   // other settings is measured again on a rerun, not reused.
   std::function<Result<Measured>(const RunToMeasure&)> measure;
   std::string measured_with;
+  // inputs_digest (sweep_inputs.hpp) when the sweep started: the children refuse to run if it changed.
+  std::string inputs;
+  // Called by the pools with every row so far (unfinished ones "pending") after each finished run, under
+  // their lock: ede-sweep keeps its tables current with it, so a sweep killed mid-way leaves tables that
+  // say which runs are missing.
+  std::function<void(const std::vector<RunRow>&)> on_rows;
 };
+
+// The exit status of a child that found the sweep file or its scene changed since its parent started.
+inline constexpr int kInputsChanged = 65;
 
 // The folder of the runs' files, and a run's files in it.
 std::string runs_dir(const Sweep& s);
@@ -74,5 +83,8 @@ RunRow execute_run(const Sweep& s, std::size_t k);
 
 // The row an earlier execution left for run k, if it still holds (reuse).
 std::optional<RunRow> reusable_row(const Sweep& s, const PlannedRun& r);
+
+// Run k's row before it has finished: status "pending", saying why it has no result yet.
+RunRow pending_row(const Sweep& s, std::size_t k);
 
 }  // namespace ede::sweep

@@ -72,6 +72,7 @@ enum class RunStatus {
   NonFinite,          // a NaN or infinity appeared (overflow): the run stopped at that event; see the message
   Collapsed,          // inelastic collapse: a disk slowed below resolvable speeds while much energy remains
   EndedByProgram,     // Simulation::finish ended it at the current time (its log is complete)
+  Inexact,            // the run outgrew its scalar type: disks overlapped, or the clock passed what it holds
 };
 const char* to_string(RunStatus);
 bool is_finished(RunStatus);  // anything but Running

@@ -81,6 +81,13 @@ struct SpinSpec {
   double temperature = 0;  // Maxwell: kT of the rotation (k = 1)
 };
 
+// Where a value stands in the scene's file, for the errors setup finds after loading (an overlap in an
+// explicit list, a lattice too small for its disks), which name FILE:LINE:COL and the key like the
+// loader's own: line and column from 1, or 0 when the value did not come from the file (--set, code).
+struct SourceSpot {
+  std::uint32_t line = 0, column = 0;
+};
+
 struct SpeciesSpec {
   std::string name;
   std::int64_t count = 0;
@@ -90,6 +97,8 @@ struct SpeciesSpec {
   VelocitySpec velocity;
   double inertia_factor = 0.5;  // moment of inertia I = inertia_factor * m r^2 (0.5: a uniform disk)
   SpinSpec spin;
+  SourceSpot spot, count_spot;            // its [[species]] table and its count (else the table) in the file
+  std::vector<SourceSpot> position_spots;  // explicit placement: each [x, y] (empty: not from a file)
 };
 
 struct StopSpec {  // the run ends at the first condition met; at least one must be given

@@ -21,6 +21,12 @@ struct InitialState {
   std::string note;  // what setup did beyond the scene's words (growth: the packing fraction reached), or empty
 
   std::size_t size() const { return x.size(); }
+  // Disk i's species name for messages ("species K" when its index names none: a state not yet checked).
+  std::string species_name_of(std::size_t i) const {
+    const std::int32_t k = species[i];
+    if (k >= 0 && std::size_t(k) < species_names.size()) return species_names[std::size_t(k)];
+    return "species " + std::to_string(k);
+  }
   void add(double px, double py, double pvx, double pvy, double r, double m, std::int32_t s) {
     x.push_back(px);
     y.push_back(py);

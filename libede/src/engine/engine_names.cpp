@@ -25,13 +25,23 @@ const char* to_string(RunStatus s) {
     case RunStatus::ReachedCollisions: return "reached stop.collisions_per_particle";
     case RunStatus::ReachedEnergy: return "reached stop.energy_fraction";
     case RunStatus::NoMoreEvents: return "no more events (nothing will collide again)";
-    case RunStatus::Stalled: return "stalled (inelastic collapse)";
+    case RunStatus::Stalled: return "stalled (time stopped advancing)";
     case RunStatus::CameToRest: return "came to rest (speeds below what the scalar type resolves)";
     case RunStatus::NonFinite: return "stopped: a non-finite number (NaN or infinity) appeared";
     case RunStatus::Collapsed: return "inelastic collapse (a cluster slowed below resolvable speeds)";
     case RunStatus::EndedByProgram: return "ended by its program (Simulation::finish)";
+    case RunStatus::Inexact: return "stopped: the run outgrew its scalar type (overlapping disks or an overflowing clock)";
   }
   return "?";
+}
+
+// A log's status words back to the status. Older words are kept: "stalled (inelastic collapse)" was a
+// stall's name before an elastic run's stall (the clock's resolution) was told apart from collapse.
+RunStatus status_from_text(const std::string& text) {
+  for (int k = 0; k <= int(RunStatus::Inexact); ++k)
+    if (text == to_string(RunStatus(k))) return RunStatus(k);
+  if (text == "stalled (inelastic collapse)") return RunStatus::Stalled;
+  return RunStatus::Running;
 }
 
 bool is_finished(RunStatus s) { return s != RunStatus::Running; }

@@ -1,7 +1,7 @@
 // When a run stops and what happens between disk events: samples and actions by time or by collisions per
 // disk, the stop conditions (time, events, collisions, energy), and the two ways an inelastic run can end
 // on its own (stalled: time stops advancing; cooled below what the scalar type resolves), with the message
-// that says what to do.
+// that says what to do (a stall's words are in stall_text.hpp, which tells collapse from an elastic run's clock).
 #pragma once
 
 #include <algorithm>
@@ -11,8 +11,10 @@
 #include <sstream>
 
 #include "core/energy.hpp"
+#include "core/state_of.hpp"
 #include "engine/engine_state.hpp"
 #include "engine/room_action.hpp"
+#include "engine/stall_text.hpp"
 
 namespace ede {
 
@@ -89,23 +91,13 @@ void note_time(S& s, typename S::Scalar t) {
 // cooled to such speeds keeps ~1e-30 of its energy in float, ~1e-290 in double).
 inline constexpr double kCollapseEnergyFraction = 1e-6;
 
-// The stall's message: what happened and the fix that applies.
+// The stall's message: what happened and the fix that applies to this run's physics (stall_text.hpp).
 template <class S>
 std::string stall_message(const S& s) {
-  std::ostringstream m;
-  m << "the simulation stalled at t = " << double(s.now) << ": " << s.stall.same_time_events
-    << " consecutive events without time advancing (inelastic collapse). ";
-  if constexpr (S::Effects::kGravity)
-    m << "Under gravity, disks settling on the floor or on each other bounce ever lower and ever faster: "
-         "resting contact is not a state an event-driven run can reach. ";
-  if (s.tc_model())
-    m << "Increase physics.tc (now " << s.opt.physics.tc << ")"
-      << (S::Effects::kGravity ? " so that settled disks keep hopping elastically at a height of about g tc^2 / 8, and keep "
-                                 "wall_restitution above 0."
-                               : ".");
-  else
-    m << "Enable the TC model (physics.tc > 0, e.g. 1e-3 of the mean free time) or raise the restitution.";
-  return m.str();
+  using T = typename S::Scalar;
+  return stall_text({double(s.now), s.stall.same_time_events, !S::Effects::kDissipative || s.opt.physics.elastic(),
+                     S::Effects::kGravity, s.tc_model(), s.opt.physics.tc, to_string(scalar_kind_of<T>()),
+                     double(scalar_limits<T>::epsilon())});
 }
 
 // A disk left a collision slower than the scalar type resolves (Restitution::note_if_too_slow): collapse

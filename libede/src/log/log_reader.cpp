@@ -5,12 +5,16 @@
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#define ZSTD_STATIC_LINKING_ONLY  // ZSTD_estimateDStreamSize_fromFrame, for an out-of-memory message
 #include <zstd.h>
+#include <zstd_errors.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <new>
 #include <kj/exception.h>
 
 #include "ede_log.capnp.h"
@@ -25,6 +29,25 @@ constexpr std::uint64_t kInitialBuffer = std::uint64_t(1) << 20;  // decompressi
 
 std::string at(const std::string& path, std::uint64_t offset) {
   return path + " (byte " + std::to_string(offset) + ")";
+}
+
+std::string mib_text(double bytes) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3g MiB", bytes / 1048576);
+  return b;
+}
+
+// Running out of memory while reading a record is not damage: said as such, with what it needed. Without
+// this a zstd allocation failure read "corrupted record (Allocation error: not enough memory)".
+Error out_of_memory(const std::string& path, std::uint64_t offset, std::uint64_t payload, std::uint64_t content,
+                    std::size_t decoder) {
+  std::string need = mib_text(double(payload)) + " compressed";
+  if (content) need += ", " + mib_text(double(content)) + " decompressed";
+  if (decoder) need += ", " + mib_text(double(decoder)) + " for zstd's decoder";
+  return Error{at(path, offset) + ": out of memory while reading this record (" + need +
+                   ", on top of what the process holds): the log is not damaged, the memory left is too small "
+                   "(ulimit -v or the machine's). Fix: raise the limit or free memory, then read the log again.",
+               ErrorKind::Io};
 }
 
 bool read_exact(int fd, std::uint64_t offset, void* out, std::size_t n) {
@@ -113,13 +136,31 @@ Result<std::shared_ptr<LogReader>> LogReader::open(const std::string& path, cons
 }
 
 Result<MessageWords> LogReader::load_message(std::uint64_t offset, std::uint64_t payload_size) const {
+  std::uint64_t content = 0;
+  std::size_t decoder = 0;
+  try {
+    return decompress_record(offset, payload_size, content, decoder);
+  } catch (const std::bad_alloc&) {
+    return out_of_memory(path_, offset, payload_size, content, decoder);
+  }
+}
+
+// load_message's work; `content` and `decoder` are set as soon as they are known, for its message.
+Result<MessageWords> LogReader::decompress_record(std::uint64_t offset, std::uint64_t payload_size,
+                                                  std::uint64_t& content, std::size_t& decoder) const {
   const std::uint64_t start = offset + logfmt::kRecordHeaderSize;
   if (payload_size == 0 || payload_size > logfmt::kMaxPayloadBytes || start + payload_size > file_size_)
     return Error{at(path_, offset) + ": record payload outside the file", ErrorKind::Corrupt};
+  unsigned char head[ZSTD_FRAMEHEADERSIZE_MAX];  // the declared size, for the message if the buffers do not fit
+  const std::size_t head_size = std::size_t(std::min<std::uint64_t>(payload_size, sizeof head));
+  if (read_exact(fd_, start, head, head_size)) {
+    const unsigned long long declared = ZSTD_getFrameContentSize(head, head_size);
+    if (declared != ZSTD_CONTENTSIZE_ERROR && declared != ZSTD_CONTENTSIZE_UNKNOWN) content = declared;
+  }
   std::vector<unsigned char> compressed(payload_size);
   if (!read_exact(fd_, start, compressed.data(), compressed.size()))
     return Error{at(path_, offset) + ": cannot read the record", ErrorKind::Corrupt};
-  const unsigned long long content = ZSTD_getFrameContentSize(compressed.data(), compressed.size());
+  content = ZSTD_getFrameContentSize(compressed.data(), compressed.size());
   if (content == ZSTD_CONTENTSIZE_ERROR || content == ZSTD_CONTENTSIZE_UNKNOWN)
     return Error{at(path_, offset) + ": the record is not a zstd frame with a declared size", ErrorKind::Corrupt};
   if (content == 0 || content > limits_.max_record_bytes || content % 8 != 0)
@@ -129,8 +170,11 @@ Result<MessageWords> LogReader::load_message(std::uint64_t offset, std::uint64_t
     return Error{at(path_, offset) + ": the zstd frame does not fill its record", ErrorKind::Corrupt};
   // Streamed into a buffer that grows only as output arrives: a corrupted declared size cannot make us
   // allocate gigabytes up front; the output must then match the declared size exactly.
+  decoder = ZSTD_estimateDStreamSize_fromFrame(compressed.data(), compressed.size());
+  if (ZSTD_isError(decoder)) decoder = 0;
   MessageWords words(std::min<std::uint64_t>(content, kInitialBuffer) / 8);
   ZSTD_DStream* stream = ZSTD_createDStream();
+  if (!stream) throw std::bad_alloc();
   ZSTD_initDStream(stream);
   ZSTD_inBuffer in{compressed.data(), compressed.size(), 0};
   std::size_t produced = 0;
@@ -141,11 +185,20 @@ Result<MessageWords> LogReader::load_message(std::uint64_t offset, std::uint64_t
         problem = "the record decompresses to more than its declared size";
         break;
       }
-      words.resize(std::min<std::uint64_t>(content, 2 * produced) / 8);
+      try {
+        words.resize(std::min<std::uint64_t>(content, 2 * produced) / 8);
+      } catch (const std::bad_alloc&) {
+        ZSTD_freeDStream(stream);
+        throw;
+      }
     }
     ZSTD_outBuffer out{words.data(), words.size() * 8, produced};
     const std::size_t r = ZSTD_decompressStream(stream, &out, &in);
     produced = out.pos;
+    if (ZSTD_isError(r) && ZSTD_getErrorCode(r) == ZSTD_error_memory_allocation) {
+      ZSTD_freeDStream(stream);
+      throw std::bad_alloc();
+    }
     if (ZSTD_isError(r)) {
       problem = std::string("corrupted record (") + ZSTD_getErrorName(r) + ")";
       break;

@@ -85,6 +85,7 @@ class LogReader {
   const std::vector<unsigned char>& final_time_bytes() const { return final_time_; }
 
   // The decompressed Cap'n Proto message of a record, checked: 8-byte words, the size the frame declares.
+  // Too little memory for it is an Io error saying so and what the record needed, never "corrupted".
   Result<MessageWords> load_message(std::uint64_t offset, std::uint64_t payload_size) const;
 
   // Where the file can be cut to continue the run from its last resumable keyframe.
@@ -93,6 +94,8 @@ class LogReader {
  private:
   LogReader() = default;
   Status read_header_record(std::uint64_t offset, std::uint64_t payload_size);
+  Result<MessageWords> decompress_record(std::uint64_t offset, std::uint64_t payload_size, std::uint64_t& content,
+                                         std::size_t& decoder) const;
   Status read_index(std::uint64_t offset);
   Status scan_records(std::uint64_t from);
 

@@ -9,19 +9,12 @@
 
 #include "core/energy.hpp"
 #include "log/log_writer.hpp"
+#include "engine/engine.hpp"
 #include "replay/replay.hpp"
 
 namespace ede {
 
 namespace {
-
-RunStatus status_from_text(const std::string& text) {
-  for (RunStatus s : {RunStatus::ReachedTime, RunStatus::ReachedEvents, RunStatus::ReachedCollisions,
-                      RunStatus::ReachedEnergy, RunStatus::NoMoreEvents, RunStatus::Stalled, RunStatus::CameToRest,
-                      RunStatus::NonFinite, RunStatus::Collapsed, RunStatus::EndedByProgram})
-    if (text == to_string(s)) return s;
-  return RunStatus::Running;
-}
 
 template <class T>
 Status convert_as(const std::shared_ptr<const LogReader>& log, const std::string& out_path, std::uint32_t version) {

@@ -8,11 +8,14 @@
 // NonFinite at the last good event (so the log up to there is complete and readable), and records the
 // event number and what went wrong; the Simulation stops at the end of its slice and reports it.
 // Checking x - x == 0 is true exactly for finite x in every scalar type (float128 too) without fast-math.
+// At the end of a run it also asks the end check (run/end_check.hpp) whether the run may be reported as it
+// ended; if not, the log is closed with status Inexact and the check's message is the run's.
 // Rejected: a check in the engine's loop (the engine stays free of run policy; a sink sees every outcome
 // anyway), and scanning the whole state between slices (O(N) per slice, and the event number is lost).
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <sstream>
 #include <string>
 
@@ -25,9 +28,13 @@ class FiniteGuard final : public Sink<T> {
  public:
   // `next`: the sink to protect (nullptr: none, the guard only detects); `first_event`: the number of the
   // first event this run will pass on (a resumed run's logged events before it).
-  FiniteGuard(Sink<T>* next, std::uint64_t first_event) : next_(next), event_(first_event) {}
+  // `end_check`: empty when the run may end as it did, else the message of an Inexact stop.
+  using EndCheck = std::function<std::string(T time, const Particles<T>& p, RunStatus status)>;
+  FiniteGuard(Sink<T>* next, std::uint64_t first_event, EndCheck end_check = {})
+      : next_(next), event_(first_event), end_check_(std::move(end_check)) {}
 
   bool tripped() const { return tripped_; }
+  RunStatus stop_status() const { return stop_status_; }  // NonFinite or Inexact, once tripped
   const std::string& message() const { return message_; }
 
   void on_start(T time, const Particles<T>& p) override {
@@ -49,7 +56,18 @@ class FiniteGuard final : public Sink<T> {
     if (!tripped_ && next_) next_->on_rebuild(point);
   }
   void on_finish(T time, const Particles<T>& p, RunStatus status) override {
-    if (!tripped_ && next_) next_->on_finish(time, p, status);
+    if (tripped_) return;
+    if (end_check_) {
+      std::string problem = end_check_(time, p, status);
+      if (!problem.empty()) {
+        tripped_ = true;
+        stop_status_ = RunStatus::Inexact;
+        message_ = std::move(problem);
+        if (next_) message_ += " The log holds every event of the run and is complete.";
+        status = RunStatus::Inexact;
+      }
+    }
+    if (next_) next_->on_finish(time, p, status);
   }
   bool wants_cell_events() const override { return next_ && next_->wants_cell_events(); }
 
@@ -82,8 +100,10 @@ class FiniteGuard final : public Sink<T> {
 
   Sink<T>* next_;
   std::uint64_t event_;
+  EndCheck end_check_;
   T last_good_time_{};
   bool tripped_ = false;
+  RunStatus stop_status_ = RunStatus::NonFinite;
   std::string message_;
 };
 

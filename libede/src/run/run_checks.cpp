@@ -5,6 +5,7 @@
 
 #include "ede/number_text.hpp"
 #include "ede/simulation.hpp"
+#include "run/scale_checks.hpp"
 
 namespace ede {
 
@@ -14,11 +15,6 @@ constexpr double kRefusedSamples = 1e12;  // ~a day at 1e7 samples/s, for the sa
 constexpr double kWarnedSamples = 1e9;
 
 std::string num(double v) { return exact_text(v, ScalarKind::Double); }
-
-std::string species_of(const InitialState& s, std::size_t i) {
-  const std::int32_t k = s.species[i];
-  return k >= 0 && std::size_t(k) < s.species_names.size() ? s.species_names[std::size_t(k)] : std::to_string(k);
-}
 
 // The checks in double do not cover a float run, which overflows near 3.4e38: a mass, an energy, a
 // momentum or the sum of the two heaviest masses (the collision rule divides by it: past the range two
@@ -32,7 +28,7 @@ Status check_fits_float(const Scene& scene, const InitialState& s) {
     const float m = float(s.mass[i]), vx = float(s.vx[i]), vy = float(s.vy[i]);
     const float e = 0.5f * m * (vx * vx + vy * vy);
     if (!std::isfinite(m) || !std::isfinite(e) || !std::isfinite(m * vx) || !std::isfinite(m * vy))
-      return Error{scene.source_name + ": disk " + std::to_string(i) + " (species '" + species_of(s, i) +
+      return Error{scene.source_name + ": disk " + std::to_string(i) + " (species '" + s.species_name_of(i) +
                    "') has mass " + num(s.mass[i]) + " and velocity [" + num(s.vx[i]) + ", " + num(s.vy[i]) +
                    "]: with engine.scalar = \"float\" its mass, energy or momentum overflows a float (largest "
                    "3.4e38). Fix: scale the units so that masses and speeds are near 1, or run in double."};
@@ -60,7 +56,7 @@ Status check_run_can_finish(const Scene& scene, const InitialState& s) {
     const double m = s.mass[i], vx = s.vx[i], vy = s.vy[i];
     const double e = 0.5 * m * (vx * vx + vy * vy);
     if (!std::isfinite(e) || !std::isfinite(m * vx) || !std::isfinite(m * vy))
-      return Error{scene.source_name + ": disk " + std::to_string(i) + " (species '" + species_of(s, i) +
+      return Error{scene.source_name + ": disk " + std::to_string(i) + " (species '" + s.species_name_of(i) +
                    "') has mass " + num(m) + " and velocity [" + num(vx) + ", " + num(vy) +
                    "]: its energy or momentum overflows a double, so every number of the run would be infinite. "
                    "Fix: scale the units so that masses and speeds are within a few orders of magnitude of 1."};
@@ -71,6 +67,7 @@ Status check_run_can_finish(const Scene& scene, const InitialState& s) {
                  "(too many disks too heavy or too fast). Fix: scale the units (masses and speeds near 1)."};
   if (scene.scalar == ScalarKind::Float)
     if (Status f = check_fits_float(scene, s); !f) return f;
+  if (Status f = check_state_scales(scene, s); !f) return f;
   if (scene.sample_interval && scene.stop.time) {
     const double samples = *scene.stop.time / *scene.sample_interval;
     if (!(samples <= kRefusedSamples))

@@ -5,7 +5,8 @@
 // Refused: an initial state whose energy or momentum overflows a double (masses near 1e308: every later
 // number would be infinite), or in a float run a float (3.4e38; also the sum of the two heaviest masses,
 // which the collision rule divides by), and a sampling interval so small against stop.time that the samples alone
-// could not be taken in a lifetime (more than 1e12). Warned: a sampling interval giving more than 1e9
+// could not be taken in a lifetime (more than 1e12); scales the run's scalar type cannot hold exactly
+// (run/scale_checks.hpp, called from here after the overflow checks, whose messages come first). Warned: a sampling interval giving more than 1e9
 // samples. The scene loader refuses what it can tell from the file alone (an energy stop with elastic
 // collisions); a run whose length depends on the physics is estimated by the tool from a short pilot
 // (docs/reliability.md). Rejected: refusing on a pilot's estimate (a slow start is not a slow run; a

@@ -4,6 +4,7 @@
 
 #include "run/run_checks.hpp"
 #include "run/run_start.hpp"
+#include "run/scale_checks.hpp"
 #include "setup/setup.hpp"
 
 namespace ede {
@@ -14,6 +15,7 @@ Result<RunPlan> plan_run(const Scene& scene) {
     if (!started) return started.error();
     return plan_run_from(started.value().scene, std::move(started.value().initial));
   }
+  if (Status s = check_scene_scales(scene); !s) return s.error();  // before setup computes with them
   auto initial = build_initial_state(scene);
   if (!initial) return initial.error();
   return plan_run_from(scene, std::move(initial).value());

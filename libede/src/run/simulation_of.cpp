@@ -13,6 +13,7 @@
 #include "core/seconds_since.hpp"
 #include "core/state_csv.hpp"
 #include "core/state_of.hpp"
+#include "run/end_check.hpp"
 #include "run/finite_guard.hpp"
 #include "run/impulse_meter.hpp"
 #include "run/progress_fraction.hpp"
@@ -38,8 +39,15 @@ class SimulationOf final : public Simulation::Impl {
       : plan_(std::move(plan)), engine_(std::move(run.engine)), log_(std::move(run.log)), px0_(px0), py0_(py0) {
     Sink<T>* log_sink = nullptr;
     if constexpr (kLogScalar<T>) log_sink = log_.get();
-    // The guard passes every finite outcome on to the log (first, as DESIGN.md orders the sinks).
-    guard_ = std::make_unique<FiniteGuard<T>>(log_sink, first_event);
+    // The guard passes every finite outcome on to the log (first, as DESIGN.md orders the sinks), and at
+    // the end asks the end check whether the run may end as it did.
+    const Scene& sc = setup_.scene;
+    EndCheckContext context{sc.source_name, sc.scalar, sc.lx, sc.ly, sc.boundary == BoundaryKind::Periodic,
+                            sc.physics.has_gravity()};
+    guard_ = std::make_unique<FiniteGuard<T>>(
+        log_sink, first_event, [context](T time, const Particles<T>& p, RunStatus status) {
+          return end_of_run_problem(p, time, status, context);
+        });
     engine_->add_sink(guard_.get());
   }
 
@@ -54,7 +62,7 @@ class SimulationOf final : public Simulation::Impl {
       const std::uint64_t before = engine_->counts().events() + engine_->counts().of(EventKind::Sample);
       s = until ? engine_->run_until(T(*until), n) : engine_->run(n);
       if (guard_->tripped()) {
-        s = RunStatus::NonFinite;
+        s = guard_->stop_status();
         break;
       }
       if (s != RunStatus::Running) break;
@@ -142,7 +150,7 @@ class SimulationOf final : public Simulation::Impl {
     drive(std::numeric_limits<std::uint64_t>::max(), Time(engine_->time()));
     if (is_finished(status) || !write_error.empty() || guard_->tripped()) return;  // it ended on its own
     guard_->on_finish(engine_->time(), engine_->particles(), RunStatus::EndedByProgram);
-    status = RunStatus::EndedByProgram;
+    status = guard_->tripped() ? guard_->stop_status() : RunStatus::EndedByProgram;
   }
 
   void measure_impulses() {

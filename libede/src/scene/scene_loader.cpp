@@ -459,6 +459,21 @@ void check_total(const Reader& sp, std::int64_t count, const std::vector<Species
           "use fewer disks: each costs a few hundred bytes, so 10^8 disks already need tens of GB of memory");
 }
 
+SourceSpot spot_of(const toml::node& node) {
+  return {std::uint32_t(node.source().begin.line), std::uint32_t(node.source().begin.column)};
+}
+
+// Where setup's errors about this species point (SpeciesSpec::spot and the rest).
+void record_spots(const toml::table& table, SpeciesSpec& s) {
+  s.spot = spot_of(table);
+  const toml::node* count = table.get("count");
+  s.count_spot = count ? spot_of(*count) : s.spot;
+  const toml::node* placement = table.get("placement");
+  const toml::node* positions = placement && placement->is_table() ? placement->as_table()->get("positions") : nullptr;
+  if (positions && positions->is_array())
+    for (const toml::node& p : *positions->as_array()) s.position_spots.push_back(spot_of(p));
+}
+
 SpeciesSpec read_species(const toml::node& node, std::size_t i, const Reader& top, const Scene& scene) {
   const std::string path = "species[" + std::to_string(i) + "]";
   const toml::table* table = node.as_table();
@@ -479,6 +494,7 @@ SpeciesSpec read_species(const toml::node& node, std::size_t i, const Reader& to
   s.velocity = read_velocity(sp, s.count);
   read_rotation(sp, s);
   if (s.placement.kind == PlacementKind::Explicit) check_positions(sp, s, scene);
+  record_spots(*table, s);
   return s;
 }
 

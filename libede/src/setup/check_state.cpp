@@ -6,6 +6,7 @@
 // The message names the lowest-numbered overlapping pair (deterministic, whatever the grid's order) and
 // how many pairs overlap in all, so a user fixing a file knows whether it is one slip or a systematic one.
 // Rejected: an all-pairs loop (10^12 pair tests at 10^6 disks) and sorting by x (O(N sqrt N) in 2D).
+#include <algorithm>
 #include <cmath>
 
 #include "setup/setup.hpp"
@@ -20,14 +21,8 @@ using setup_detail::number_text;
 constexpr std::size_t kMaxDisks = 100000000;
 constexpr double kOverlapTolerance = 1e-12;
 
-std::string species_name(const InitialState& s, std::size_t i) {
-  const std::int32_t k = s.species[i];
-  if (k >= 0 && std::size_t(k) < s.species_names.size()) return s.species_names[std::size_t(k)];
-  return "species " + std::to_string(k);
-}
-
 std::string disk_name(const InitialState& s, std::size_t i) {
-  return "disk " + std::to_string(i) + " (" + species_name(s, i) + ")";
+  return "disk " + std::to_string(i) + " (" + s.species_name_of(i) + ")";
 }
 
 std::string point_text(double x, double y) { return "(" + number_text(x) + ", " + number_text(y) + ")"; }
@@ -121,11 +116,51 @@ Error overlap_error(const InitialState& s, const Overlap& o, const std::string& 
   const std::size_t i = o.i, j = o.j;
   const std::string others =
       o.pairs > 1 ? " (" + std::to_string(o.pairs - 1) + " other overlapping pairs too)" : std::string();
-  return Error{source + ": disks " + std::to_string(i) + " (" + species_name(s, i) + ") and " + std::to_string(j) +
-               " (" + species_name(s, j) + ") overlap: centres " + point_text(s.x[i], s.y[i]) + " and " +
+  return Error{source + ": disks " + std::to_string(i) + " (" + s.species_name_of(i) + ") and " + std::to_string(j) +
+               " (" + s.species_name_of(j) + ") overlap: centres " + point_text(s.x[i], s.y[i]) + " and " +
                point_text(s.x[j], s.y[j]) + ", radii " + number_text(s.radius[i]) + " and " +
                number_text(s.radius[j]) + ", distance " + number_text(o.distance) + " < contact distance " +
                number_text(s.radius[i] + s.radius[j]) + others + "; move them apart or reduce the radii"};
+}
+
+// A disk of a scene's state by its key: species[k].placement.positions[m] for an explicit list (with the
+// spot of that [x, y] in the file), else species[k] and its number among the species' disks.
+struct DiskKey {
+  std::string key;
+  SourceSpot spot;
+};
+
+DiskKey disk_key(const Scene& scene, const InitialState& s, std::size_t i) {
+  const std::size_t k = std::size_t(s.species[i]);
+  const auto first = std::lower_bound(s.species.begin(), s.species.end(), s.species[i]) - s.species.begin();
+  const std::size_t m = i - std::size_t(first);
+  const SpeciesSpec& sp = scene.species[k];
+  const std::string species = "species[" + std::to_string(k) + "]";
+  if (sp.placement.kind == PlacementKind::Explicit)
+    return {species + ".placement.positions[" + std::to_string(m) + "]",
+            m < sp.position_spots.size() ? sp.position_spots[m] : SourceSpot{}};
+  return {species + " (disk " + std::to_string(m) + " of its placement)", sp.spot};
+}
+
+// The overlap in the form of the scene loader's errors (docs/scene-format.md): FILE:LINE:COL, the key of
+// the later disk, the other one's key and line, and the fix.
+Error scene_overlap_error(const Scene& scene, const InitialState& s, const Overlap& o) {
+  const std::size_t i = o.i, j = o.j;
+  const DiskKey a = disk_key(scene, s, i), b = disk_key(scene, s, j);
+  const SourceSpot at = b.spot.line ? b.spot : a.spot;
+  std::string where = scene.source_name;
+  if (at.line) where += ":" + std::to_string(at.line) + ":" + std::to_string(at.column);
+  const double contact = s.radius[i] + s.radius[j];
+  return Error{where + ": error: " + b.key + " (species '" + s.species_name_of(j) + "'): disk " + std::to_string(j) +
+               " overlaps disk " + std::to_string(i) + " (" + a.key +
+               (a.spot.line ? ", line " + std::to_string(a.spot.line) : std::string()) + ", species '" +
+               s.species_name_of(i) + "'): centres " + point_text(s.x[j], s.y[j]) + " and " +
+               point_text(s.x[i], s.y[i]) + ", radii " + number_text(s.radius[j]) + " and " +
+               number_text(s.radius[i]) + ", distance " + number_text(o.distance) + " < contact distance " +
+               number_text(contact) +
+               (o.pairs > 1 ? " (" + std::to_string(o.pairs - 1) + " other overlapping pairs too)" : std::string()) +
+               ". Fix: move them apart (centres at least " + number_text(contact) +
+               " apart) or reduce the radii."};
 }
 
 }  // namespace
@@ -147,7 +182,8 @@ static Status check_mass_sum(const InitialState& s, const std::string& source) {
                "each other. Fix: scale all masses down (only their ratios matter to the motion)."};
 }
 
-Status check_initial_state(const InitialState& state, BoundaryKind boundary, const std::string& source_name) {
+Status check_initial_state(const InitialState& state, BoundaryKind boundary, const std::string& source_name,
+                           const Scene* scene) {
   if (Status st = check_shape(state, source_name); !st) return st;
   const bool periodic = boundary == BoundaryKind::Periodic;
   for (std::size_t i = 0; i < state.size(); ++i) {
@@ -156,7 +192,9 @@ Status check_initial_state(const InitialState& state, BoundaryKind boundary, con
   if (state.size() > 1)
     if (Status st = check_mass_sum(state, source_name); !st) return st;
   const Overlap o = find_overlaps(state, periodic);
-  if (o.pairs > 0) return overlap_error(state, o, source_name);
+  if (o.pairs > 0)
+    return scene && scene->species.size() == state.species_names.size() ? scene_overlap_error(*scene, state, o)
+                                                                         : overlap_error(state, o, source_name);
   return Ok{};
 }
 

@@ -45,6 +45,14 @@ std::string species_where(const Scene& scene, std::size_t k) {
   return scene.source_name + ": species '" + scene.species[k].name + "' (index " + std::to_string(k) + "): ";
 }
 
+// The loader's form for an error found here about one key of species k (docs/scene-format.md):
+// "FILE:LINE:COL: error: species[k].KEY (species 'NAME'): " (no line when the value was not in the file).
+std::string key_where(const Scene& scene, std::size_t k, const std::string& key, SourceSpot spot) {
+  std::string where = scene.source_name;
+  if (spot.line) where += ":" + std::to_string(spot.line) + ":" + std::to_string(spot.column);
+  return where + ": error: species[" + std::to_string(k) + "]." + key + " (species '" + scene.species[k].name + "'): ";
+}
+
 bool finite_positive(double v) { return std::isfinite(v) && v > 0; }
 bool finite_nonnegative(double v) { return std::isfinite(v) && v >= 0; }
 
@@ -252,6 +260,9 @@ Status place_species(const Scene& scene, std::size_t k, PlacementGrid& grid, Rng
       const double r_max = d.r.empty() ? 0.0 : *std::max_element(d.r.begin(), d.r.end());  // sites fit the largest
       st = setup_detail::place_lattice({s.placement.lattice, s.placement.region, scene.lx, scene.ly, periodic},
                                        r_max, s.count, d.x, d.y);
+      if (!st)
+        return Error{key_where(scene, k, "count", s.count_spot) + st.error().message +
+                     ". Fix: reduce count or radius, or enlarge the region."};
       break;
     }
     case PlacementKind::Explicit:
@@ -397,7 +408,7 @@ Result<InitialState> build_initial_state(const Scene& scene) {
       state.add(d.x[i], d.y[i], vx[i], vy[i], d.r[i], m[i], std::int32_t(k));
     if (scene.rotates()) setup_detail::assign_spins(scene.species[k], m, d.r, streams[k], state.omega, state.inertia);
   }
-  if (Status st = check_initial_state(state, scene.boundary, scene.source_name); !st) return st.error();
+  if (Status st = check_initial_state(state, scene.boundary, scene.source_name, &scene); !st) return st.error();
   if (Status st = check_disks_clear_of_segments(state, scene.physics.segments, scene.source_name); !st)
     return st.error();
   return state;

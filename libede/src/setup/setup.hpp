@@ -22,8 +22,11 @@ Result<InitialState> build_initial_state(const Scene& scene);
 // radius and mass, species indices in range, disks inside the box (walls: the whole disk in [0, lx] x
 // [0, ly]; periodic: the centre in [0, lx) x [0, ly) and the disk no wider than the box), and no two
 // disks overlapping beyond a relative tolerance of 1e-12 of the contact distance (minimum image when
-// periodic). Grid-accelerated: O(N). Messages start with source_name and name disks by id and species.
-Status check_initial_state(const InitialState& state, BoundaryKind boundary, const std::string& source_name);
+// periodic). Grid-accelerated: O(N). Messages start with source_name and name disks by id and species;
+// given the scene the state was built from, an overlap is said as the loader says errors (FILE:LINE:COL,
+// the key of the [x, y] in an explicit list, Fix:).
+Status check_initial_state(const InitialState& state, BoundaryKind boundary, const std::string& source_name,
+                           const Scene* scene = nullptr);
 
 // Wall segments (check_segments.cpp): finite, of non-zero length, restitution in [0, 1], end points in the
 // box; refused in a periodic box and with gravity. And every disk at least its radius from every segment

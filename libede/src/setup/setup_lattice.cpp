@@ -108,8 +108,7 @@ Error does_not_fit(const LatticePlacement& where, double r, std::int64_t count) 
   return Error{std::to_string(count) + " disks of radius " + number_text(r) + " do not fit on a " +
                kind_name(where.kind) + " lattice in region [" + number_text(g.x0) + ", " + number_text(g.x1) +
                "] x [" + number_text(g.y0) + ", " + number_text(g.y1) + "]: at most " +
-               std::to_string(max_fit(where.kind, g.width(), g.height(), r)) +
-               " fit; reduce count or radius, or enlarge the region"};
+               std::to_string(max_fit(where.kind, g.width(), g.height(), r)) + " fit"};
 }
 
 // Sites row by row, relative to the first site; odd rows shifted by half a spacing.

@@ -12,7 +12,11 @@
 #              and the table is the uninterrupted one's
 #   mpi-kill   kill -9 of an MPI worker rank mid-sweep ends the job (OpenMPI aborts it); running the sweep
 #              again finishes it, and the table is the uninterrupted one's (skipped like mpi)
-#   bad        a bad point and a run stopped by the timeout are rows with their errors; the others finish
+#   bad        a run stopped by the timeout is a row with its error; the others finish; a sweep with an
+#              invalid point is refused before any run, naming the point
+#   abuse      a second sweep into a folder another one is writing is refused; the sweep killed mid-way
+#              leaves tables saying which runs are pending, and a rerun gives the reference tables; the
+#              sweep file edited while it runs: the later runs are "changed", a rerun runs them all again
 #   collapse   a run that falls into inelastic collapse is a row with its status and the library's remedy,
 #              measured all the same; the other run finishes; a rerun keeps the row (the run's own outcome)
 set -u
@@ -129,7 +133,8 @@ mpi-kill)
     for _ in $(seq 300); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
     kill -0 "$pid" 2>/dev/null && fail "the killed rank's run process $pid is still running after 30 s"
   done
-  [ -f m/runs.csv ] && fail "the aborted job wrote a table"
+  # Rank 0 keeps the tables current while it runs: what the aborted job left marks its unfinished runs pending.
+  if [ -f m/runs.csv ]; then grep -q ',pending,' m/runs.csv || fail "the aborted job's table marks no run pending"; fi
   $MPI "$SWEEP" "$HERE/long.sweep.toml" --out-dir m --no-timing >again 2>&1 || { cat again; fail "the rerun failed"; }
   cat again
   grep -q "reused)" again || fail "no line about reused runs"
@@ -140,11 +145,21 @@ bad)
   status=$?
   cat out bad/runs.csv
   [ $status = 3 ] || fail "exit status $status, expected 3 (some runs did not end ok)"
-  grep -q "4 runs: 1 failed, 2 ok, 1 timeout" out || fail "the closing line"
-  grep -q "^1,p1,1.5,0.5,,,failed,.*physics.restitution: must be in \[0, 1\], got 1.5" bad/runs.csv || fail "the bad point's row"
-  grep -q "^2,p2,1.0,1e+06,,,timeout,stopped after the sweep's timeout of 2 s" bad/runs.csv || fail "the timed-out row"
-  grep -q "^0,p0,.*,ok," bad/runs.csv && grep -q "^3,p3,.*,ok," bad/runs.csv || fail "the good points"
-  grep -q "^1,1.5,0.5,1,0,," bad/points.csv || fail "the bad point's aggregate: $(cat bad/points.csv)"
+  grep -q "3 runs: 2 ok, 1 timeout" out || fail "the closing line"
+  grep -q "^1,p1,1.0,1e+06,,,timeout,stopped after the sweep's timeout of 2 s" bad/runs.csv || fail "the timed-out row"
+  grep -q "^0,p0,.*,ok," bad/runs.csv && grep -q "^2,p2,.*,ok," bad/runs.csv || fail "the good points"
+  # A point whose scene is invalid (restitution 1.5) is found before any run starts: nothing runs, and the
+  # message names the point, the key and the fix.
+  sed -e "s|^scene = .*|scene = \"$src/examples/cooling.toml\"|" \
+      -e 's|^values = \[\[0.9, 0.5\], |values = [[0.9, 0.5], [1.5, 0.5], |' "$HERE/bad.sweep.toml" >badpoint.sweep.toml
+  grep -q "\[1.5, 0.5\]" badpoint.sweep.toml || fail "the test could not add the bad point"
+  "$SWEEP" badpoint.sweep.toml --out-dir bp -j 2 -q >out 2>&1; status=$?
+  cat out
+  [ $status = 1 ] || fail "a sweep with an invalid point: exit status $status, expected 1"
+  grep -q "badpoint.sweep.toml: 1 of the 4 points give a scene that does not load, so nothing was run" out &&
+    grep -q "point 1 (physics.restitution = 1.5, stop.time = 0.5): .*physics.restitution: must be in \[0, 1\], got 1.5" out &&
+    grep -q "^Fix: change those values" out || fail "the invalid point's message"
+  [ -z "$(ls bp/runs 2>/dev/null)" ] || fail "a run started although a point was invalid: $(ls bp/runs)"
   # A bad sweep file is refused before anything runs, naming the file, the place and the fix.
   printf 'scene = "%s"\ncolect = []\n' "$src/examples/cooling.toml" >typo.sweep.toml
   "$SWEEP" typo.sweep.toml >out 2>&1; status=$?
@@ -158,6 +173,42 @@ bad)
   "$SWEEP" r.sweep.toml >out 2>&1; status=$?
   [ $status = 1 ] && grep -q "a range needs from, to (numbers) and count" out || fail "a bad range: $(cat out)"
   [ ! -e sweep-results ] || fail "a refused sweep file made a results folder"
+  ;;
+abuse)
+  # Two sweeps into one folder, the sweep itself killed mid-way, its file edited between runs.
+  sed -e "s|^scene = .*|scene = \"$src/examples/cooling.toml\"|" "$HERE/long.sweep.toml" >long.sweep.toml
+  "$SWEEP" long.sweep.toml --out-dir ref -j 1 --no-timing -q >/dev/null 2>&1 || fail "the reference sweep failed"
+  "$SWEEP" long.sweep.toml --out-dir a -j 1 --no-timing -q >first 2>&1 &
+  first=$!
+  victim=$(child_of $first 0 a/runs/p0-s1.ede) || { kill $first; fail "the first sweep's run never started"; }
+  "$SWEEP" long.sweep.toml --out-dir a -j 1 --no-timing -q >second 2>&1; status=$?
+  cat second
+  [ $status = 1 ] && grep -q "a: another ede-sweep (pid $first) is writing this results folder now" second &&
+    grep -q "Fix: wait for it to end, or give this sweep another folder (--out-dir)" second ||
+    fail "a second sweep into the same folder was not refused (status $status)"
+  kill -9 $first; wait $first 2>/dev/null
+  for _ in $(seq 300); do kill -0 "$victim" 2>/dev/null || break; sleep 0.1; done
+  cat a/runs.csv
+  [ -f a/runs.csv ] || fail "the sweep killed mid-way left no table"
+  grep -q '^0,p0-s1,1,,,pending,"not finished when this table was written' a/runs.csv ||
+    fail "the killed sweep's table should say run 0 is pending and why"
+  [ "$(grep -c ',pending,' a/runs.csv)" = 3 ] || fail "every run of the killed sweep should be pending"
+  "$SWEEP" long.sweep.toml --out-dir a -j 1 --no-timing -q >again 2>&1 || { cat again; fail "the rerun failed"; }
+  cmp ref/runs.csv a/runs.csv && cmp ref/points.csv a/points.csv || fail "the rerun's tables differ from the reference"
+  # Edited while it runs: the runs not started yet are refused ("changed"), none silently runs the new file.
+  "$SWEEP" long.sweep.toml --out-dir e -j 1 --no-timing -q >edited 2>&1 &
+  sweep=$!
+  child_of $sweep 0 e/runs/p0-s1.ede >/dev/null || { kill $sweep; fail "the edited sweep's run never started"; }
+  sed -i 's|stop.time=6.0|stop.time=5.0|' long.sweep.toml
+  wait $sweep; status=$?
+  cat edited e/runs.csv
+  [ $status = 3 ] || fail "a sweep edited while it ran: exit status $status, expected 3"
+  grep -q "3 runs: 2 changed, 1 ok" edited || fail "the edited sweep's closing line"
+  grep -q '^1,p0-s2,2,,,changed,"not run: long.sweep.toml or its scene .* changed while the sweep ran' e/runs.csv ||
+    fail "the runs after the edit should be 'changed' with the reason"
+  "$SWEEP" long.sweep.toml --out-dir e -j 1 --no-timing >again 2>&1 || { cat again; fail "the rerun after the edit failed"; }
+  cat again
+  grep -q "3 runs: 3 ok (3 run now, 0 reused)" again || fail "the rerun after the edit reused a run of the old file"
   ;;
 collapse)
   "$SWEEP" "$HERE/collapse.sweep.toml" --out-dir c -j 2 -q >out 2>&1
