@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-#include "core/number_text.hpp"
+#include "ede/number_text.hpp"
 #include "core/particles.hpp"
 #include "ede/events.hpp"
 #include "ede/scene.hpp"

@@ -6,7 +6,7 @@
 #include <limits>
 #include <optional>
 
-#include "core/number_text.hpp"
+#include "ede/number_text.hpp"
 
 namespace ede {
 

@@ -41,7 +41,7 @@ class SimulationOf final : public Simulation::Impl {
     if constexpr (kLogScalar<T>) log_sink = log_.get();
     // The guard passes every finite outcome on to the log (first, as DESIGN.md orders the sinks), and at
     // the end asks the end check whether the run may end as it did.
-    const Scene& sc = setup_.scene;
+    const Scene& sc = plan_.scene;
     EndCheckContext context{sc.source_name, sc.scalar, sc.lx, sc.ly, sc.boundary == BoundaryKind::Periodic,
                             sc.physics.has_gravity()};
     guard_ = std::make_unique<FiniteGuard<T>>(
