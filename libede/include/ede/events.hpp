@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 
 namespace ede {
 
@@ -75,6 +76,8 @@ enum class RunStatus {
   Inexact,            // the run outgrew its scalar type: disks overlapped, or the clock passed what it holds
 };
 const char* to_string(RunStatus);
+// The status a log's final words name (to_string(RunStatus), older words included); Running if none.
+RunStatus status_from_text(const std::string& text);
 bool is_finished(RunStatus);  // anything but Running
 
 // One logged event with everything known about it, in the log's own values (exact, widened to Time).

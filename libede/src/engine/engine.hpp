@@ -130,8 +130,6 @@ enum class EngineKind {
 };
 const char* to_string(EngineKind kind);  // "walls, dissipative", ...
 
-// The status a log's final words name (to_string(RunStatus), older words included); Running if none.
-RunStatus status_from_text(const std::string& text);
 // The engine a run needs: the one with the fewest effects compiled in that computes it.
 EngineKind engine_kind_for(const EngineOptions& options);
 // Whether engine `kind` computes the run `options` describes (the boundary matches, gravity only in

@@ -9,7 +9,7 @@
 
 #include "core/energy.hpp"
 #include "log/log_writer.hpp"
-#include "engine/engine.hpp"
+#include "ede/events.hpp"
 #include "replay/replay.hpp"
 
 namespace ede {
