@@ -3,11 +3,9 @@
 // not its remedy; an inelastic run's stall is collapse, and the TC model is.
 #include <catch2/catch.hpp>
 
-#include "engine/stall_text.hpp"
+#include "text_support.hpp"
 
-namespace {
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
-}  // namespace
+#include "engine/stall_text.hpp"
 
 TEST_CASE("an elastic stall names the clock's resolution, not inelastic collapse", "[engine][stall]") {
   ede::StallFacts f;

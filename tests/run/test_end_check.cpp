@@ -4,6 +4,8 @@
 // that pass (touching disks, disks at rest).
 #include <catch2/catch.hpp>
 
+#include "text_support.hpp"
+
 #include "run/end_check.hpp"
 
 namespace {
@@ -32,7 +34,6 @@ ede::EndCheckContext context(bool periodic = false) {
   return c;
 }
 
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 
 }  // namespace
 

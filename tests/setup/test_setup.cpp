@@ -5,6 +5,8 @@
 // an all-pairs loop written here, independent of the grid that setup and check_initial_state share.
 // Statistical checks use fixed seeds and 5-sigma tolerances.
 #include <catch2/catch.hpp>
+
+#include "text_support.hpp"
 #include <cmath>
 #include <string>
 #include <vector>
@@ -100,7 +102,6 @@ double packing_fraction(const InitialState& s, std::int32_t species, double area
   return sum / area;
 }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 }  // namespace
 

@@ -3,6 +3,8 @@
 // that holds the elastic engine alone (checked on its symbols). The timings themselves are not tested
 // (benchmarks are not timed tests): only that they are there and positive.
 #include <catch2/catch.hpp>
+
+#include "text_support.hpp"
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -13,7 +15,6 @@ using namespace ede::test;
 
 namespace {
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 }  // namespace
 

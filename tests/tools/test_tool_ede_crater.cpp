@@ -4,6 +4,8 @@
 // Logs come from ede-sim on examples/crater.toml shrunk with --set: 200-400 bed disks of radius ~0.014
 // and a projectile of radius 0.07 (5 bed radii), which run in well under a second.
 #include <catch2/catch.hpp>
+
+#include "text_support.hpp"
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -32,7 +34,6 @@ std::string make_crater_log(const std::string& name, const std::string& options)
 
 ToolRun crater(const std::string& args, const std::string& tag) { return run_tool("ede-crater", args, "crater-" + tag); }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 }  // namespace
 
