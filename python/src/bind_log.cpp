@@ -56,7 +56,8 @@ void check_state_fits(const SharedLog& log, const char* what) {
 
 py::dict counts_dict(const EventCounts& c) {
   py::dict d;
-  for (int k = 0; k < kEventKindCount; ++k) d[to_string(static_cast<EventKind>(k))] = c.by_kind[k];
+  for (int k = 0; k < kEventKindCount; ++k)
+    if (is_event_kind(k)) d[to_string(static_cast<EventKind>(k))] = c.by_kind[k];
   d["stale"] = c.stale, d["tc_elastic"] = c.tc_elastic;
   return d;
 }

@@ -14,7 +14,7 @@ struct ConvertOptions {
 };
 
 int run_convert(const ConvertOptions& opt) {
-  if (opt.version < 1 || opt.version > 2) return usage_error("--format-version must be 1 or 2");
+  if (opt.version < 1 || opt.version > 3) return usage_error("--format-version must be 1, 2 or 3");
   if (opt.output == opt.log) return usage_error("-o must name a new file, not the log being converted");
   auto log = open_log(opt.log);
   if (!log) return fail(log.error().message);
@@ -38,7 +38,7 @@ Command add_convert_command(CLI::App& app) {
       "convert", "write a complete log again in another format version (2: predicted columns, the default; 1)");
   cmd->add_option("log", opt->log, "event log to convert")->required();
   cmd->add_option("-o,--output", opt->output, "the converted log (a new file)")->required();
-  cmd->add_option("--format-version", opt->version, "format version to write: 2 (default) or 1");
+  cmd->add_option("--format-version", opt->version, "format version to write: 2 (default), 1, or 3 (a log with thermostat events stays in 3)");
   return [opt] { return run_convert(*opt); };
 }
 

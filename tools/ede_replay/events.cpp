@@ -1,7 +1,8 @@
 // ede-replay events: the logged events in a time or index range, as CSV.
 //
 //   index,time,kind,i,j,vix,viy,vjx,vjy
-// kind is pair, wall, wrap or action; j is the partner (pair), the wall (0 left, 1 right, 2 bottom,
+// kind is pair, wall, wrap, action, segment or thermostat (i: the disk whose velocity was redrawn, j -1);
+// j is the partner (pair), the wall (0 left, 1 right, 2 bottom,
 // 3 top) or the wrap direction (0 right, 1 left, 2 top, 3 bottom: the edge crossed); the velocities are
 // the post-event ones (pair: both disks; wall: disk i). Columns a kind does not have are empty. Numbers
 // are exact (float 9, double 17, long double 21 digits). --full adds the positions at the event and the
@@ -34,9 +35,12 @@ struct EventsOptions {
 };
 
 bool has_disk(EventKind k) {
-  return k == EventKind::Pair || k == EventKind::Wall || k == EventKind::Wrap || k == EventKind::Segment;
+  return k == EventKind::Pair || k == EventKind::Wall || k == EventKind::Wrap || k == EventKind::Segment ||
+         k == EventKind::Thermostat;
 }
-bool has_vi(EventKind k) { return k == EventKind::Pair || k == EventKind::Wall || k == EventKind::Segment; }
+bool has_vi(EventKind k) {
+  return k == EventKind::Pair || k == EventKind::Wall || k == EventKind::Segment || k == EventKind::Thermostat;
+}
 
 // One row; the columns an event kind does not have are left empty.
 // The collision's statistics (empty for wraps and actions; pair-only fields empty for walls).

@@ -54,7 +54,8 @@ void print_events(const Log& log, std::string& problem) {
   line("events", total + ": pair " + std::to_string(c.of(EventKind::Pair)) + ", wall " +
                      std::to_string(c.of(EventKind::Wall)) + ", wrap " + std::to_string(c.of(EventKind::Wrap)) +
                      ", action " + std::to_string(c.of(EventKind::Action)) +
-                     (c.of(EventKind::Segment) ? ", segment " + std::to_string(c.of(EventKind::Segment)) : ""));
+                     (c.of(EventKind::Segment) ? ", segment " + std::to_string(c.of(EventKind::Segment)) : "") +
+                     (c.of(EventKind::Thermostat) ? ", thermostat " + std::to_string(c.of(EventKind::Thermostat)) : ""));
 }
 
 void print_records(const Log& log) {

@@ -6,7 +6,7 @@
 //   ede-replay events LOG [--from T0] [--to T1] [-o FILE]   events as CSV (or --from-event/--to-event)
 //   ede-replay verify LOG                            re-run the logged scene and compare every event
 //   ede-replay diff A B                              the first event at which two logs differ
-//   ede-replay convert LOG -o OUT [--format-version 1|2]   the same log in another format version
+//   ede-replay convert LOG -o OUT [--format-version 1|2|3]   the same log in another format version
 //
 // Thin: one file per subcommand, each parsing its options and calling the public ede::Log (states, events,
 // verify, diff, convert). A first argument that is not a subcommand makes the command `state`, so the common

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <initializer_list>
 #include <string>
 
 namespace ede {
@@ -25,22 +26,31 @@ using Time = long double;
 //   Action   a scheduled action (reverse every velocity)
 //   Sample   an observer's sampling time: no state change, not logged
 //   Segment  a disk hits a wall segment (its body or an end point); Event::j is the segment's index
-#define EDE_EVENT_KINDS(X) \
-  X(Pair, 0, "pair")       \
-  X(Wall, 1, "wall")       \
-  X(Cell, 2, "cell")       \
-  X(Wrap, 3, "wrap")       \
-  X(Action, 4, "action")   \
-  X(Sample, 5, "sample")   \
-  X(Segment, 6, "segment")
+//   Thermostat  the Andersen thermostat redraws one disk's velocity (Event::j is -1); 7 is kept for the
+//            square wells' step events (issue 38)
+#define EDE_EVENT_KINDS(X)    \
+  X(Pair, 0, "pair")          \
+  X(Wall, 1, "wall")          \
+  X(Cell, 2, "cell")          \
+  X(Wrap, 3, "wrap")          \
+  X(Action, 4, "action")      \
+  X(Sample, 5, "sample")      \
+  X(Segment, 6, "segment")    \
+  X(Thermostat, 8, "thermostat")
 
 #define EDE_EVENT_KIND_ENUM(name, value, text) name = value,
 enum class EventKind : std::uint8_t { EDE_EVENT_KINDS(EDE_EVENT_KIND_ENUM) };
 #undef EDE_EVENT_KIND_ENUM
-#define EDE_EVENT_KIND_ONE(name, value, text) +1
-constexpr int kEventKindCount = 0 EDE_EVENT_KINDS(EDE_EVENT_KIND_ONE);
-#undef EDE_EVENT_KIND_ONE
-const char* to_string(EventKind);  // "pair", "wall", ...
+// One more than the largest kind's number (arrays indexed by the kind; a number the list skips stays 0).
+#define EDE_EVENT_KIND_BOUND(name, value, text) (value) + 1,
+constexpr int kEventKindCount = [] {
+  int n = 0;
+  for (int bound : {EDE_EVENT_KINDS(EDE_EVENT_KIND_BOUND) 0}) n = bound > n ? bound : n;
+  return n;
+}();
+#undef EDE_EVENT_KIND_BOUND
+const char* to_string(EventKind);  // "pair", "wall", ...; "?" for a number the list skips
+bool is_event_kind(int value);     // a number of the list
 
 // Event::j of a wall event: which wall. Of a wrap event: which edge the disk crossed.
 enum WallId : std::int32_t { kWallLeft = 0, kWallRight = 1, kWallBottom = 2, kWallTop = 3 };
@@ -56,7 +66,7 @@ struct EventCounts {
   // Processed events: everything but samples and stale predictions (what stop.events counts).
   std::uint64_t events() const {
     return of(EventKind::Pair) + of(EventKind::Wall) + of(EventKind::Cell) + of(EventKind::Wrap) +
-           of(EventKind::Action) + of(EventKind::Segment);
+           of(EventKind::Action) + of(EventKind::Segment) + of(EventKind::Thermostat);
   }
 };
 

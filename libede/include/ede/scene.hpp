@@ -88,6 +88,15 @@ struct SourceSpot {
   std::uint32_t line = 0, column = 0;
 };
 
+// The Andersen thermostat ([thermostat], or [species.thermostat] for one species; docs/scene-format.md,
+// docs/physics.md): each disk it covers has its velocity redrawn from Maxwell-Boltzmann at kT
+// (each component ~ N(0, kT/m)) at the times of a Poisson process of rate `rate` (per disk, per unit time).
+struct ThermostatSpec {
+  double temperature = 1;            // kT (Boltzmann's constant is 1)
+  double rate = 0;                   // redraws per disk per unit time; 0: the disks are not thermostatted
+  std::vector<std::string> species;  // [thermostat] only: the species it covers (empty: every species)
+};
+
 struct SpeciesSpec {
   std::string name;
   std::int64_t count = 0;
@@ -97,6 +106,7 @@ struct SpeciesSpec {
   VelocitySpec velocity;
   double inertia_factor = 0.5;  // moment of inertia I = inertia_factor * m r^2 (0.5: a uniform disk)
   SpinSpec spin;
+  std::optional<ThermostatSpec> thermostat;  // [species.thermostat]: this species' own, instead of [thermostat]
   SourceSpot spot, count_spot;            // its [[species]] table and its count (else the table) in the file
   std::vector<SourceSpot> position_spots;  // explicit placement: each [x, y] (empty: not from a file)
 };
@@ -148,6 +158,7 @@ struct PhysicsSpec {
   // +1 reverses it (perfectly rough, energy conserved with xi = 1).
   double roughness = -1;
   double wall_roughness = -1;
+  std::optional<ThermostatSpec> thermostat;  // [thermostat]: the Andersen thermostat for every species (or those listed)
 
   double wall(int side) const { return walls[std::size_t(side)].value_or(wall_restitution); }
   bool has_gravity() const { return gravity[0] != 0 || gravity[1] != 0; }
@@ -228,6 +239,12 @@ struct Scene {
   bool rotates() const {
     bool any = physics.rough();
     for (const SpeciesSpec& s : species) any = any || s.spin.kind != SpinSpec::Kind::Zero;
+    return any;
+  }
+  // Some disks are thermostatted: [thermostat], or a species' own with a rate above 0.
+  bool thermostatted() const {
+    bool any = physics.thermostat.has_value();
+    for (const SpeciesSpec& s : species) any = any || (s.thermostat && s.thermostat->rate > 0);
     return any;
   }
 };

@@ -2,7 +2,7 @@
 //
 // Everything here is integer arithmetic or IEEE-exact double operations (one multiply by a power of two,
 // one correctly rounded sqrt), so the output is the same bit for bit on every platform; only normal_pair
-// calls std::log. below() is Lemire's "nearly divisionless" method: one 64x64->128 multiply per draw and a
+// calls std::log (normal_pair_exact and exponential_exact use exact_log instead). below() is Lemire's "nearly divisionless" method: one 64x64->128 multiply per draw and a
 // division only in the rare rejection branch. Rejected: x % n (biased) and the classic "reject above
 // the largest multiple of n" (a division per draw).
 #include "core/rng.hpp"
@@ -89,6 +89,37 @@ void Rng::normal_pair(double& z0, double& z1) {
     const double s = u * u + v * v;
     if (s >= 1.0 || s == 0.0) continue;
     const double f = std::sqrt(-2.0 * std::log(s) / s);
+    z0 = u * f;
+    z1 = v * f;
+    return;
+  }
+}
+
+double exact_log(double x) {
+  int e = 0;
+  double m = std::frexp(x, &e);  // x = m 2^e, m in [0.5, 1): exact
+  if (m < 0x1.6a09e667f3bcdp-1) {  // below sqrt(1/2): m in [sqrt(1/2), sqrt(2)) after doubling (exact)
+    m = m * 2.0;
+    e = e - 1;
+  }
+  const double z = (m - 1.0) / (m + 1.0);
+  const double z2 = z * z;
+  double sum = 1.0 / 23.0;
+  for (int k = 10; k >= 0; --k) sum = sum * z2 + 1.0 / double(2 * k + 1);
+  const double ln_m = 2.0 * z * sum;
+  // ln 2 = ln2_hi + ln2_lo (to 1e-26), ln2_hi with 33 significant bits, so e * ln2_hi is exact (|e| <= 1075).
+  constexpr double kLn2Hi = 0x1.62e42feep-1, kLn2Lo = 0x1.a39ef35793c76p-33;
+  const double de = double(e);
+  return de * kLn2Hi + (de * kLn2Lo + ln_m);
+}
+
+void Rng::normal_pair_exact(double& z0, double& z1) {
+  for (;;) {
+    const double u = 2.0 * uniform01() - 1.0;
+    const double v = 2.0 * uniform01() - 1.0;
+    const double s = u * u + v * v;
+    if (s >= 1.0 || s == 0.0) continue;
+    const double f = std::sqrt(-2.0 * exact_log(s) / s);
     z0 = u * f;
     z1 = v * f;
     return;

@@ -21,6 +21,14 @@ std::uint64_t splitmix64_next(std::uint64_t& state);
 // The top 53 bits of `bits` times 2^-53: uniform in [0, 1), every value a multiple of 2^-53.
 constexpr double uniform01_from_bits(std::uint64_t bits) { return double(bits >> 11) * 0x1.0p-53; }
 
+// ln(x) for finite x > 0 from IEEE operations alone (+, -, *, / and the exact frexp), in a fixed order, so
+// its bits do not depend on the libm: x = m 2^e with m in [sqrt(1/2), sqrt(2)), z = (m - 1) / (m + 1),
+// ln m = 2 (z + z^3/3 + ... + z^23/23) by Horner's rule in z^2 (|z| <= 0.1716: the next term is below 1e-18
+// of the sum), ln x = e ln2_hi + (e ln2_lo + ln m) with ln 2 split so that e ln2_hi is exact. Within a few
+// units in the last place of the correctly rounded value (tests/core/test_rng.cpp). Rejected: std::log,
+// which the standard does not require to be correctly rounded, so two libms may differ in the last bit.
+double exact_log(double x);
+
 class Rng {
  public:
   explicit Rng(std::uint64_t seed);
@@ -49,6 +57,11 @@ class Rng {
   // A pair of independent standard normal deviates (Marsaglia's polar method; uses std::log and std::sqrt,
   // so the last bit may differ between libms: std::log is not required to be correctly rounded).
   void normal_pair(double& z0, double& z1);
+  // The same method with exact_log (below) for std::log: bit-identical on every platform, for draws that
+  // are part of a run's trajectory (the thermostat), not only of its start.
+  void normal_pair_exact(double& z0, double& z1);
+  // Exponential with mean 1: -exact_log(1 - uniform01()), 1 - u in (0, 1] exactly.
+  double exponential_exact() { return -exact_log(1.0 - uniform01()); }
 
   // A generator for an independent stream, e.g. one per species. Its SplitMix64 starts at
   // seed ^ mix(stream * 0x9E3779B97F4A7C15), where mix is SplitMix64's output function (a bijection with

@@ -1,6 +1,6 @@
 // Effects: the small policy types an Engine is instantiated with, one axis per kind of physics a scene
-// can switch on: Boundary, Dissipation, Field, Contact (the pair root), Walls (segments) and Spin, six
-// axes; the engine table (engine_factory.hpp) builds eight combinations per scalar type.
+// can switch on: Boundary, Dissipation, Field, Contact (the pair root), Walls (segments), Spin and Heat
+// (the thermostat), seven axes; the engine table (engine_factory.hpp) builds ten combinations per scalar type.
 //
 // The engine branches on them with `if constexpr`, so code for an effect a scene does not use is not
 // compiled into that scene's engine: an elastic gas has no restitution, no TC bookkeeping, no energy
@@ -18,6 +18,7 @@
 #include "engine/restitution.hpp"
 #include "engine/roughness.hpp"
 #include "engine/segment_walls.hpp"
+#include "engine/thermostat.hpp"
 
 namespace ede {
 
@@ -96,6 +97,22 @@ struct Rough {
   static constexpr bool kRough = true;
   template <class T>
   using State = Roughness<T>;
+};
+
+// The Andersen thermostat (thermostat.hpp, room_thermostat.hpp): velocities redrawn from Maxwell-Boltzmann
+// at Poisson times, a kind of event of its own. Without it (every scene before the thermostat existed) the
+// loop has no thermostat clock to compare with and nothing of it is compiled in. Thermostat engines are
+// Dissipative (a driven granular gas is the point; xi = 1 computes exactly what Elastic does), without
+// gravity, segments or rotation (refused by the scene).
+struct NoThermostat {
+  static constexpr bool kThermostat = false;
+  template <class T>
+  using State = NoThermostatClock;
+};
+struct Andersen {
+  static constexpr bool kThermostat = true;
+  template <class T>
+  using State = AndersenClock<T>;
 };
 
 // The pair contact-time root: a function, not a flag. The library's engines use the stable form of

@@ -22,6 +22,7 @@
 #include "ede/events.hpp"
 #include "ede/scene.hpp"
 #include "core/sink.hpp"
+#include "engine/thermostat.hpp"
 
 namespace ede {
 
@@ -59,12 +60,22 @@ struct EngineOptions {
   // first stages and +6 to +19 % more at 10^6 for the neighbours, nothing at 10^4 where every record is in
   // the cache anyway; from 2^15 on, like the replay's lookahead.
   std::size_t prefetch_upcoming_from = 32768;
+  // The Andersen thermostat: the species' own ([species.thermostat]; physics.thermostat covers the rest)
+  // and the scene's seed, from which its draws are made (room_thermostat.hpp).
+  std::vector<SpeciesThermostat> species_thermostats;
+  std::uint64_t seed = 1;
 };
 
 // The TC model is on when a scene dissipates and sets tc > 0 (an elastic scene's tc changes nothing).
 inline bool uses_tc_model(const PhysicsSpec& ph) { return ph.tc > 0 && !ph.elastic(); }
 // A run needs a rough engine: the disks spin, or some contact is rough.
 inline bool uses_rotation(const EngineOptions& o) { return o.rotation || o.physics.rough(); }
+// A run needs a thermostat engine: [thermostat], or some species' own with a rate above 0.
+inline bool uses_thermostat(const EngineOptions& o) {
+  bool any = o.physics.thermostat.has_value();
+  for (const SpeciesThermostat& s : o.species_thermostats) any = any || s.rate > 0;
+  return any;
+}
 
 // The engine options a scene asks for; `disks` sizes the automatic rebuild interval.
 EngineOptions engine_options_from(const Scene& scene, std::size_t disks);
@@ -127,6 +138,8 @@ enum class EngineKind {
   WallsSegments,        // wall segments inside a walled box, elastic or not, without gravity
   PeriodicRough,        // rough or spinning disks (omega, I, beta), periodic box
   WallsRough,           // rough or spinning disks, walled box (no gravity, no segments)
+  PeriodicThermostat,   // the Andersen thermostat, periodic box, elastic or not
+  WallsThermostat,      // the Andersen thermostat, walled box (no gravity, no segments, no rotation)
 };
 const char* to_string(EngineKind kind);  // "walls, dissipative", ...
 

@@ -49,6 +49,19 @@ Status check_engine_input(const InitialState& init, const EngineOptions& options
   if (!beta_in_range) return Error{"roughness coefficients (beta) must lie in [-1, 1]"};
   if (uses_rotation(options) && (ph.has_gravity() || !ph.segments.empty()))
     return Error{"rough or spinning disks under gravity or with wall segments are not supported yet; make them smooth"};
+  if (uses_thermostat(options)) {
+    if (uses_rotation(options) || ph.has_gravity() || !ph.segments.empty())
+      return Error{"the thermostat with gravity, wall segments or rough disks is not supported yet; remove one of them"};
+    if (ph.thermostat && !(ph.thermostat->temperature > 0 && finite(ph.thermostat->temperature) &&
+                           ph.thermostat->rate > 0 && finite(ph.thermostat->rate)))
+      return Error{"the thermostat's temperature and rate must be finite and > 0"};
+    for (const SpeciesThermostat& t : options.species_thermostats)
+      if (!(t.temperature > 0 && finite(t.temperature) && t.rate >= 0 && finite(t.rate)))
+        return Error{"species '" + t.species + "': its thermostat's temperature must be finite and > 0, its rate finite and >= 0"};
+    for (const std::string& name : ph.thermostat ? ph.thermostat->species : std::vector<std::string>{})
+      if (std::find(init.species_names.begin(), init.species_names.end(), name) == init.species_names.end())
+        return Error{"the thermostat names species '" + name + "', which the initial state does not have"};
+  }
   if ((!init.omega.empty() && init.omega.size() != n) || (!init.inertia.empty() && init.inertia.size() != n))
     return Error{"the initial state's angular velocities or moments of inertia do not match its disk count"};
   for (std::size_t i = 0; i < init.omega.size(); ++i)

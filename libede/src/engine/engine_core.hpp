@@ -1,7 +1,7 @@
-// Engine<T, Boundary, Dissipation, Field, Contact, Walls, Spin>: the event-driven hard-disk engine, one
-// instantiation per set of effects (six axes, effects.hpp; the instantiations that exist: engine_factory.hpp).
+// Engine<T, Boundary, Dissipation, Field, Contact, Walls, Spin, Heat>: the event-driven hard-disk engine, one
+// instantiation per set of effects (seven axes, effects.hpp; the instantiations that exist: engine_factory.hpp).
 //
-// The loop: take the earliest of (next disk event, next sample, next action, stop time); for a disk event,
+// The loop: take the earliest of (next disk event, next sample, next action, next thermostat redraw, stop time); for a disk event,
 // discard it if its partner changed since it was predicted (collision counters), else hand it to the room of
 // its kind, which brings the disks involved to the event time (lazy state: nobody else moves), resolves it,
 // tells the sinks and re-predicts those disks only. Each disk holds one prediction (its earliest collision,
@@ -10,7 +10,7 @@
 // something approaches them. The few disks much larger than the rest stay out of the cell lists
 // (big_disks.hpp), so they do not set the cell size for everyone.
 // This class is the loop and the set-up; the rest lives in rooms over its state (engine_state.hpp): one per
-// event kind (room_pair, room_wall, room_segment, room_crossing, room_wrap, room_action), the predictions
+// event kind (room_pair, room_wall, room_segment, room_crossing, room_wrap, room_action, room_thermostat), the predictions
 // (predict_disk), the stops (stops), the invariants (invariants) and the prefetch (prefetch). Adding an
 // event kind is its value in EDE_EVENT_KINDS (ede/events.hpp), its room, and its line in resolve() below.
 // Rejected: storing every predicted pair event (the queue grows with density and fills with stale events)
@@ -38,6 +38,7 @@
 #include "engine/room_crossing.hpp"
 #include "engine/room_pair.hpp"
 #include "engine/room_segment.hpp"
+#include "engine/room_thermostat.hpp"
 #include "engine/room_wall.hpp"
 #include "engine/room_wrap.hpp"
 #include "engine/stops.hpp"
@@ -45,9 +46,9 @@
 namespace ede {
 
 template <class T, class Boundary, class Dissipation, class Field = NoField, class Contact = StableContact,
-          class Walls = NoSegments, class Spin = Smooth>
+          class Walls = NoSegments, class Spin = Smooth, class Heat = NoThermostat>
 class Engine final : public EngineApi<T> {
-  using Fx = EffectSet<Boundary, Dissipation, Field, Contact, Walls, Spin>;
+  using Fx = EffectSet<Boundary, Dissipation, Field, Contact, Walls, Spin, Heat>;
   using State = EngineState<T, Fx>;
 
  public:
@@ -62,6 +63,8 @@ class Engine final : public EngineApi<T> {
     if constexpr (Fx::kDissipative)
       s.dissipation.setup(init.species_names, options.physics, uses_tc_model(options.physics));
     if constexpr (Fx::kRough) s.spin.setup(init.species_names, options.physics);
+    if constexpr (Fx::kThermostat)
+      s.thermostat.setup(init.species_names, init.species, options.physics, options.species_thermostats, options.seed);
     if constexpr (Fx::kGravity) {
       s.field.gx = s.p.gx = T(options.physics.gravity[0]);
       s.field.gy = s.p.gy = T(options.physics.gravity[1]);
@@ -117,6 +120,11 @@ class Engine final : public EngineApi<T> {
       if (!ph.pairs.empty()) o << ", per species pair";
       o << ")";
     }
+    if constexpr (Fx::kThermostat) {
+      std::size_t disks = 0;
+      for (const auto& g : s_.thermostat.groups) disks += g.disks.size();
+      o << ", Andersen thermostat (" << disks << " disks, " << s_.thermostat.total_rate << " redraws per unit time)";
+    }
     o << Contact::kLabel << ", grid " << s_.grid.nx() << "x" << s_.grid.ny();
     if (!s_.big.empty()) o << " + " << s_.big.size() << (s_.big.size() == 1 ? " big disk" : " big disks");
     return o.str();
@@ -132,6 +140,7 @@ class Engine final : public EngineApi<T> {
     if constexpr (Fx::kDissipative) bytes += s_.dissipation.memory_bytes();
     if constexpr (Fx::kSegments) bytes += s_.walls.memory_bytes();
     if constexpr (Fx::kRough) bytes += s_.spin.memory_bytes();
+    if constexpr (Fx::kThermostat) bytes += s_.thermostat.memory_bytes();
     return bytes;
   }
 
@@ -149,18 +158,28 @@ class Engine final : public EngineApi<T> {
       const T t_sample = next_sample_time(s);
       const T t_action = next_action_time(s);
       const T t_stop = s.stop_time;
-      if (next.time <= t_sample && next.time <= t_action && next.time <= t_limit && next.time != kNever<T>) {
+      const T t_heat = thermostat_time(s);  // a constant never without the thermostat: its tests fold away
+      if (next.time <= t_sample && next.time <= t_action && next.time <= t_limit && next.time != kNever<T> &&
+          (!Fx::kThermostat || next.time <= t_heat)) {
         if (!process_disk_event(next)) continue;  // stale prediction: not an event
         ++done;
         if (s.counts.of(EventKind::Pair) >= s.schedule.next_pair_target) done += on_pair_target(s);
         if (const RunStatus st = check_stops(s); st != RunStatus::Running) return finish(st);
         if (s.opt.rebuild_interval && s.counts.events() % s.opt.rebuild_interval == 0) rebuild_predictions(s);
-      } else if (t_action != kNever<T> && t_action <= t_sample && t_action <= t_limit) {
+      } else if (t_action != kNever<T> && t_action <= t_sample && t_action <= t_limit &&
+                 (!Fx::kThermostat || t_action <= t_heat)) {
         // Everything that happens at time <= t, actions included, happens before an observer looks at t.
         reverse_velocities(s, t_action);
         ++done;
         if (const RunStatus st = check_stops(s); st != RunStatus::Running) return finish(st);
-      } else if (t_sample != kNever<T> && t_sample <= t_limit && !frozen_after(s, t_sample, next.time, t_action, t_stop)) {
+      } else if (Fx::kThermostat && t_heat != kNever<T> && t_heat <= t_sample && t_heat <= t_limit) {
+        // At equal times disk events and actions go first, as the order of the kinds says.
+        redraw_velocity(s, t_heat);
+        ++done;
+        if (const RunStatus st = check_stops(s); st != RunStatus::Running) return finish(st);
+        if (s.opt.rebuild_interval && s.counts.events() % s.opt.rebuild_interval == 0) rebuild_predictions(s);
+      } else if (t_sample != kNever<T> && t_sample <= t_limit &&
+                 !frozen_after(s, t_sample, std::min(next.time, t_heat), t_action, t_stop)) {
         take_sample(s, t_sample);
         ++done;  // samples count towards max_events, so a caller's run(n) always returns
       } else if (t_stop != kNever<T> && t_stop <= until) {

@@ -9,10 +9,13 @@
 //   WallsSegments        walls     Dissipative  NoField         every scene with wall segments (WithSegments)
 //   PeriodicRough        periodic  Dissipative  NoField         rough or spinning disks (Rough), periodic box
 //   WallsRough           walls     Dissipative  NoField         rough or spinning disks (Rough), walled box
+//   PeriodicThermostat   periodic  Dissipative  NoField         the Andersen thermostat (Andersen), periodic box
+//   WallsThermostat      walls     Dissipative  NoField         the Andersen thermostat (Andersen), walled box
 //
-// Eight per scalar type: make_engine_as<T> below names them all, and engine_float.cpp, engine_double.cpp,
+// Ten per scalar type: make_engine_as<T> below names them all, and engine_float.cpp, engine_double.cpp,
 // engine_long_double.cpp (and engine_float128.cpp where EDE_HAVE_FLOAT128) instantiate it once each, so
-// 32 engines (24 without __float128). The two rough ones carry omega and the tangential impulse; every
+// 40 engines (30 without __float128). The two thermostat ones have a clock the loop compares with and a
+// room of their own; every other scene's loop has neither. The two rough ones carry omega and the tangential impulse; every
 // other scene's engine has neither compiled in. Why not fewer: the elastic gas is what the speed targets are about,
 // and it must not pay for restitution, energy accounting or TC (Elastic), for walls in a periodic box
 // (Boundary) or for parabolas (Field). Why not more: within Dissipative, restitution, per-pair restitution
@@ -73,6 +76,15 @@ Result<std::unique_ptr<EngineApi<T>>> make_engine_as(EngineKind kind, const Init
       break;
     case EngineKind::WallsRough:
       e = std::make_unique<Engine<T, WallsBoundary, Dissipative, NoField, StableContact, NoSegments, Rough>>(
+          init, o, shape, resume);
+      break;
+    case EngineKind::PeriodicThermostat:
+      e = std::make_unique<
+          Engine<T, PeriodicBoundary, Dissipative, NoField, StableContact, NoSegments, Smooth, Andersen>>(
+          init, o, shape, resume);
+      break;
+    case EngineKind::WallsThermostat:
+      e = std::make_unique<Engine<T, WallsBoundary, Dissipative, NoField, StableContact, NoSegments, Smooth, Andersen>>(
           init, o, shape, resume);
       break;
   }

@@ -17,6 +17,14 @@ const char* to_string(EventKind k) {
   return "?";
 }
 
+bool is_event_kind(int value) {
+#define EDE_EVENT_KIND_IS(name, v, text) \
+  if (value == (v)) return true;
+  EDE_EVENT_KINDS(EDE_EVENT_KIND_IS)
+#undef EDE_EVENT_KIND_IS
+  return false;
+}
+
 const char* to_string(RunStatus s) {
   switch (s) {
     case RunStatus::Running: return "running";
@@ -56,12 +64,16 @@ const char* to_string(EngineKind k) {
     case EngineKind::WallsSegments: return "walls, segments";
     case EngineKind::PeriodicRough: return "periodic, rough";
     case EngineKind::WallsRough: return "walls, rough";
+    case EngineKind::PeriodicThermostat: return "periodic, thermostat";
+    case EngineKind::WallsThermostat: return "walls, thermostat";
   }
   return "?";
 }
 
 EngineKind engine_kind_for(const EngineOptions& o) {
   const bool elastic = o.physics.elastic();
+  if (uses_thermostat(o))
+    return o.boundary == BoundaryKind::Periodic ? EngineKind::PeriodicThermostat : EngineKind::WallsThermostat;
   if (uses_rotation(o)) return o.boundary == BoundaryKind::Periodic ? EngineKind::PeriodicRough : EngineKind::WallsRough;
   if (!o.physics.segments.empty()) return EngineKind::WallsSegments;
   if (o.boundary == BoundaryKind::Periodic) return elastic ? EngineKind::PeriodicElastic : EngineKind::PeriodicDissipative;
@@ -72,18 +84,22 @@ EngineKind engine_kind_for(const EngineOptions& o) {
 bool engine_can_run(EngineKind k, const EngineOptions& o) {
   const bool periodic = o.boundary == BoundaryKind::Periodic, gravity = o.physics.has_gravity();
   const bool elastic = o.physics.elastic(), segments = !o.physics.segments.empty();
-  const bool rough = uses_rotation(o);
+  const bool rough = uses_rotation(o), heat = uses_thermostat(o);
   switch (k) {
-    case EngineKind::PeriodicElastic: return periodic && !gravity && elastic && !segments && !rough;
-    case EngineKind::PeriodicDissipative: return periodic && !gravity && !segments && !rough;
-    case EngineKind::WallsElastic: return !periodic && !gravity && elastic && !segments && !rough;
-    case EngineKind::WallsDissipative: return !periodic && !gravity && !segments && !rough;
-    case EngineKind::WallsGravity: return !periodic && !segments && !rough;
-    case EngineKind::WallsSegments: return !periodic && !gravity && !rough;
+    case EngineKind::PeriodicElastic: return periodic && !gravity && elastic && !segments && !rough && !heat;
+    case EngineKind::PeriodicDissipative: return periodic && !gravity && !segments && !rough && !heat;
+    case EngineKind::WallsElastic: return !periodic && !gravity && elastic && !segments && !rough && !heat;
+    case EngineKind::WallsDissipative: return !periodic && !gravity && !segments && !rough && !heat;
+    case EngineKind::WallsGravity: return !periodic && !segments && !rough && !heat;
+    case EngineKind::WallsSegments: return !periodic && !gravity && !rough && !heat;
     // A smooth scene in a rough engine computes what it computes elsewhere (beta = -1 skips the tangential
     // part), which is what ede-bench effects and the bit-for-bit test compare.
-    case EngineKind::PeriodicRough: return periodic && !gravity && !segments;
-    case EngineKind::WallsRough: return !periodic && !gravity && !segments;
+    case EngineKind::PeriodicRough: return periodic && !gravity && !segments && !heat;
+    case EngineKind::WallsRough: return !periodic && !gravity && !segments && !heat;
+    // A scene without a thermostat in a thermostat engine computes what the dissipative engine does (the
+    // clock is never due), which is what ede-bench effects compares.
+    case EngineKind::PeriodicThermostat: return periodic && !gravity && !segments && !rough;
+    case EngineKind::WallsThermostat: return !periodic && !gravity && !segments && !rough;
   }
   return false;
 }
@@ -102,6 +118,9 @@ EngineOptions engine_options_from(const Scene& scene, std::size_t disks) {
   o.sample_collisions = scene.sample_collisions;
   o.actions = scene.actions;
   o.rotation = scene.rotates();
+  o.seed = scene.seed;
+  for (const SpeciesSpec& sp : scene.species)
+    if (sp.thermostat) o.species_thermostats.push_back({sp.name, sp.thermostat->temperature, sp.thermostat->rate});
   return o;
 }
 

@@ -72,10 +72,12 @@ inline T apply_residual(u128 r, T predicted) {
 
 // Kind byte of encoding 2: this collision was made elastic by the TC model (the rule uses 1 + xi = 2).
 constexpr unsigned char kTcElasticFlag = 0x10;
-constexpr std::uint32_t kLatestColumnEncoding = 2;
+constexpr std::uint32_t kLatestColumnEncoding = 3;
 // A resumable keyframe's engineCounts: the event kinds there were before segments (pair .. sample), stale,
-// tc_elastic, and then the segment events only in a run with segments (FORMAT.md, "Keyframe").
+// tc_elastic, and then the segment events only in a run with segments (FORMAT.md, "Keyframe"); in version 3
+// always the kinds 6, 7 and 8 (segment, step, thermostat) there.
 constexpr int kCountedKindsV2 = 6;
+constexpr int kLaterKindsV3 = 3;
 
 // The raw columns of one chunk, as the encoder fills them and the schema stores them.
 struct ChunkColumns {
@@ -167,6 +169,7 @@ class ChunkEncoder {
     if (e.kind == EventKind::Pair || e.kind == EventKind::Wall || e.kind == EventKind::Wrap ||
         e.kind == EventKind::Segment)
       add_ids(e);
+    if (e.kind == EventKind::Thermostat) add_redrawn(e);
     add_time_v2(e.time, e.predicted_time);
     const int velocities = e.kind == EventKind::Pair ? 4 : e.kind == EventKind::Wall || e.kind == EventKind::Segment ? 2 : 0;
     const int spins = !rough_ ? 0 : e.kind == EventKind::Pair ? 2 : e.kind == EventKind::Wall ? 1 : 0;
@@ -199,6 +202,10 @@ class ChunkEncoder {
       } else if (e.kind == EventKind::Wall || e.kind == EventKind::Wrap || e.kind == EventKind::Segment) {
         disks = put_varint(disks, std::uint64_t(std::uint32_t(e.i)));
         partners = put_varint(partners, std::uint64_t(std::uint32_t(e.j)));
+      } else if (e.kind == EventKind::Thermostat) {
+        disks = put_varint(disks, std::uint64_t(std::uint32_t(e.i)));
+        add_scalar(e.v[0]);
+        add_scalar(e.v[1]);
       }
       times = put_varint(times, time_code(e.time, e.predicted_time, previous));
       const int velocities = e.kind == EventKind::Pair ? 4 : e.kind == EventKind::Wall || e.kind == EventKind::Segment ? 2 : 0;
@@ -252,6 +259,13 @@ class ChunkEncoder {
       partners_.varint(zigzag(i128(e.j) - i128(e.i)));
     else
       partners_.varint(u128(e.j));
+  }
+
+  // Version 3, a thermostat event: the disk, and its new velocity as raw scalars (random: nothing predicts it).
+  void add_redrawn(const CodedEvent<T>& e) {
+    disks_.varint(u128(e.i));
+    add_scalar(e.v[0]);
+    add_scalar(e.v[1]);
   }
 
   void add_scalar(T v) {
@@ -390,7 +404,8 @@ template <class T>
       return finite_record(a) && finite_record(b);
     }
     case EventKind::Wall:
-    case EventKind::Segment: {
+    case EventKind::Segment:
+    case EventKind::Thermostat: {
       Disk<T>& a = p.disk[std::size_t(e.i)];
       rules::bring_to(a, e.time, p.gx, p.gy);
       a.vx = e.vix, a.vy = e.viy;

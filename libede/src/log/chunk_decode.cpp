@@ -136,7 +136,8 @@ bool ChunkDecoder<T>::read_kind(DecodedEvent<T>& e) {
   const unsigned char k = static_cast<unsigned char>(kind & ~flag);
   e.kind = static_cast<EventKind>(k);
   const bool known = e.kind == EventKind::Pair || e.kind == EventKind::Wall || e.kind == EventKind::Wrap ||
-                     e.kind == EventKind::Action || e.kind == EventKind::Segment;
+                     e.kind == EventKind::Action || e.kind == EventKind::Segment ||
+                     (e.kind == EventKind::Thermostat && encoding_ >= 3);
   if (!known) return fail("unknown event kind " + std::to_string(kind));
   if (e.tc_elastic && e.kind != EventKind::Pair && e.kind != EventKind::Wall && e.kind != EventKind::Segment)
     return fail("a TC flag on an event that is not a collision");
@@ -175,6 +176,7 @@ bool ChunkDecoder<T>::read_ids(DecodedEvent<T>& e) {
       e.j = std::int32_t(seg);
       return true;
     }
+    case EventKind::Thermostat: return read_disk(disks_, e.i);
     case EventKind::Wrap: {
       u128 dir;
       if (!read_disk(disks_, e.i)) return false;
@@ -273,6 +275,7 @@ bool ChunkDecoder<T>::read_v2(const Particles<T>& p, DecodedEvent<T>& e) {
     predict_segment_velocity(physics_, *d, e.time, e.j, e.tc_elastic, v);
     return read_residual(v[0], e.vix) && read_residual(v[1], e.viy);
   }
+  if (e.kind == EventKind::Thermostat) return read_scalar(e.vix) && read_scalar(e.viy);
   return true;
 }
 

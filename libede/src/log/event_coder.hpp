@@ -50,6 +50,11 @@ class EventCoder {
     if (format_version_ < 2) return code_v1(e, p, c);
     c.predicted_time = time_exact ? e.time : predicted_event_time(physics_, e.kind, e.before_i, e.before_j, e.j);
     if (check_ && time_exact) check_time(e);
+    if (e.kind == EventKind::Thermostat) {  // version 3: the drawn velocity, stored as it is
+      c.v[0] = e.vix, c.v[1] = e.viy;
+      c.velocities_predicted = false;
+      return c;
+    }
     if (!collision(e.kind)) return c;
     if (velocities_exact) {
       if (check_) check_velocities(e, p, c);

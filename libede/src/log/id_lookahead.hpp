@@ -52,6 +52,12 @@ class IdLookahead {
     unsigned char byte;
     if (!kinds_.byte(byte)) return on_ = false;
     const auto kind = static_cast<EventKind>(byte & ~flag_);
+    if (kind == EventKind::Thermostat) {  // a disk, no partner
+      u128 disk;
+      if (!disks_.varint(disk, 32)) return on_ = false;
+      if (disk < n_) prefetch(p, std::size_t(disk));
+      return true;
+    }
     if (kind != EventKind::Pair && kind != EventKind::Wall && kind != EventKind::Wrap && kind != EventKind::Segment)
       return true;  // actions carry no ids
     u128 disk, partner;

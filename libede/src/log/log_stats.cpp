@@ -15,13 +15,14 @@ namespace ede {
 
 namespace {
 
-bool loggable(unsigned char kind) {
+bool loggable(unsigned char kind, std::uint32_t encoding) {
   switch (static_cast<EventKind>(kind)) {
     case EventKind::Pair:
     case EventKind::Wall:
     case EventKind::Wrap:
     case EventKind::Action:
     case EventKind::Segment: return true;
+    case EventKind::Thermostat: return encoding >= 3;
     default: return false;
   }
 }
@@ -45,7 +46,7 @@ Status visit_chunk_kinds(const LogReader& log, const LogRecordRef& ref, F f) {
     const unsigned char flag = log.header().column_encoding >= 2 ? kTcElasticFlag : 0;
     for (const unsigned char byte : kinds) {
       const unsigned char k = static_cast<unsigned char>(byte & ~flag);
-      if (!loggable(k) || ((byte & flag) && k != 0 && k != 1))
+      if (!loggable(k, log.header().column_encoding) || ((byte & flag) && k != 0 && k != 1 && k != 6))
         return Error{where + ": unknown event kind " + std::to_string(byte)};
       if (!f(k)) break;
     }

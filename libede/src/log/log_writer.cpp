@@ -402,7 +402,7 @@ struct LogWriter<T>::Impl {
     if (rebuild) {
       words += message_words_of(4 * n);
       if (!rebuild->particles.last_collision.empty()) words += column;
-      words += kCountedKindsV2 + 3;
+      words += kCountedKindsV2 + 3 + (settings.format_version >= 3 ? 2 : 0);
     }
     return words;
   }
@@ -416,12 +416,14 @@ struct LogWriter<T>::Impl {
                            [&](std::size_t i) { return p.last_collision[i]; });
     // The six kinds before segments, stale, tc_elastic; then segment events only in runs with segments
     // (FORMAT.md), so the keyframes of every other run keep their bytes.
-    const bool segments = !run.segments.empty();
-    auto counts = k.initEngineCounts(kCountedKindsV2 + 2 + (segments ? 1 : 0));
+    // Version 3: always the segment, step and thermostat events after them (kinds 6, 7, 8).
+    const int later = settings.format_version >= 3 ? kLaterKindsV3 : !run.segments.empty() ? 1 : 0;
+    auto counts = k.initEngineCounts(std::uint32_t(kCountedKindsV2 + 2 + later));
     for (int c = 0; c < kCountedKindsV2; ++c) counts.set(std::uint32_t(c), r.counts.by_kind[c]);
     counts.set(kCountedKindsV2, r.counts.stale);
     counts.set(kCountedKindsV2 + 1, r.counts.tc_elastic);
-    if (segments) counts.set(kCountedKindsV2 + 2, r.counts.of(EventKind::Segment));
+    for (int c = 0; c < later; ++c)
+      counts.set(std::uint32_t(kCountedKindsV2 + 2 + c), kCountedKindsV2 + c < kEventKindCount ? r.counts.by_kind[kCountedKindsV2 + c] : 0);
     k.setNextSample(r.next_sample_index);
     k.setNextAction(r.next_action_index);
     k.setSameTimeEvents(r.same_time_events);
@@ -472,7 +474,7 @@ Result<std::unique_ptr<LogWriter<T>>> LogWriter<T>::create(const std::string& pa
                                                            const LogSettings& settings,
                                                            const LogContinuation* continuation) {
   if (settings.chunk_events == 0) return Error{"log settings: chunk_events must be positive"};
-  if (settings.format_version < logfmt::kOldestFormatVersion || settings.format_version > logfmt::kFormatVersion)
+  if (settings.format_version < logfmt::kOldestFormatVersion || settings.format_version > logfmt::kNewestFormatVersion)
     return Error{"log settings: format version " + std::to_string(settings.format_version) + " is not one this ede writes"};
   const std::uint64_t start = continuation ? continuation->cut_offset : 0;
   auto impl = std::make_unique<Impl>(path, run, settings, start, settings.compression_level);
@@ -488,6 +490,8 @@ Result<std::unique_ptr<LogWriter<T>>> LogWriter<T>::create(const std::string& pa
   }
   if (run.rotation && settings.format_version < 2)
     return Error{"log settings: a run of rough (rotating) disks is written in format version 2 only"};
+  if (run.thermostat && settings.format_version < logfmt::kThermostatFormatVersion)
+    return Error{"log settings: a run with the thermostat is written in format version 3 only (its events are new in it)"};
   impl->chunk_first = impl->logged;
   impl->chunk_events = ChunkEvents<T>(run.rotation, settings.format_version < 2);
   impl->chunk_events.reserve(settings.chunk_events);

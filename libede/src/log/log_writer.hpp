@@ -56,6 +56,8 @@ struct LogRunInfo {
   double wall_restitution[4] = {1, 1, 1, 1};
   // Wall segments, five values each: ax, ay, bx, by, restitution (the header appends them to the walls').
   std::vector<double> segments;
+  // The Andersen thermostat redraws velocities (thermostat events): format version 3 (FORMAT.md).
+  bool thermostat = false;
   // Rough or spinning disks (EngineOptions::rotation): the header then carries I per disk and 1 + beta, and
   // chunks and keyframes the spins (FORMAT.md, "Rotation"). beta of S x S species pairs, then of the walls.
   bool rotation = false;

@@ -31,6 +31,7 @@ Status convert_as(const std::shared_ptr<const LogReader>& log, const std::string
   run.tc_model = h.tc_model;
   run.gx = h.gx, run.gy = h.gy;
   run.rotation = h.rotation();  // the replayed state carries each disk's inertia and spin
+  run.thermostat = h.format_version >= 3 && version >= 3;  // thermostat events exist in version 3 only
   run.engine_version = h.engine_version, run.compiler = h.compiler, run.compile_flags = h.compile_flags;
   if (version >= 2) {
     auto scene = parse_scene_text(h.scene_text, h.scene_name);
@@ -102,8 +103,11 @@ Status convert_log(const std::shared_ptr<const LogReader>& log, const std::strin
     return Error{log->path() + ": the log is incomplete (" + log->incomplete_reason() +
                  "); finish or resume the run before converting it"};
   if (log->damaged()) return Error{log->path() + ": the log is damaged; it cannot be converted"};
-  if (version < 1 || version > 2)
-    return Error{"format version " + std::to_string(version) + " is not one this ede writes (1 or 2)"};
+  if (version < 1 || version > 3)
+    return Error{"format version " + std::to_string(version) + " is not one this ede writes (1, 2 or 3)"};
+  if (log->header().format_version >= 3 && version < 3)
+    return Error{log->path() + ": a format version 3 log may hold thermostat events, which versions 1 and 2 cannot; "
+                 "keep it in version 3"};
   if (log->header().rotation() && version < 2)
     return Error{log->path() + ": a log of rough (rotating) disks cannot be written in format version 1, which has "
                  "no angular velocities; convert it to version 2 (--format-version 2)"};

@@ -109,7 +109,8 @@ Result<KeyframeData<T>> read_keyframe(const LogReader& log, const LogRecordRef& 
         for (std::size_t i = 0; i < n; ++i) k.last_collision[i] = scalar_from_bytes<T>(raw.data() + i * kScalarWidth<T>);
       }
       for (const std::uint64_t c : kf.getEngineCounts()) k.counts.push_back(c);
-      if (k.counts.size() != std::size_t(kCountedKindsV2 + 2) && k.counts.size() != std::size_t(kCountedKindsV2 + 3))
+      if (k.counts.size() != std::size_t(kCountedKindsV2 + 2) && k.counts.size() != std::size_t(kCountedKindsV2 + 3) &&
+          k.counts.size() != std::size_t(kCountedKindsV2 + 2 + kLaterKindsV3))
         return Error{where + ": the engine counters are malformed"};
       k.next_sample = kf.getNextSample();
       k.next_action = kf.getNextAction();
@@ -466,8 +467,9 @@ Result<StoredRebuildPoint<T>> Replay<T>::rebuild_point(std::size_t keyframe) con
   for (int c = 0; c < kCountedKindsV2; ++c) r.counts.by_kind[c] = kf.counts[std::size_t(c)];
   r.counts.stale = kf.counts[kCountedKindsV2];
   r.counts.tc_elastic = kf.counts[kCountedKindsV2 + 1];
-  if (kf.counts.size() > std::size_t(kCountedKindsV2 + 2))
-    r.counts.by_kind[int(EventKind::Segment)] = kf.counts[kCountedKindsV2 + 2];
+  for (std::size_t c = kCountedKindsV2 + 2; c < kf.counts.size(); ++c)  // kinds 6, 7, 8 (FORMAT.md)
+    if (kCountedKindsV2 + (c - (kCountedKindsV2 + 2)) < std::size_t(kEventKindCount))
+      r.counts.by_kind[kCountedKindsV2 + (c - (kCountedKindsV2 + 2))] = kf.counts[c];
   r.next_sample_index = kf.next_sample;
   r.next_action_index = kf.next_action;
   r.same_time_events = kf.same_time_events;

@@ -77,7 +77,9 @@ std::string to_text(const RunSummary& s) {
   o << "events           " << c.events() << " (pair " << c.of(EventKind::Pair) << ", wall " << c.of(EventKind::Wall)
     << ", cell " << c.of(EventKind::Cell) << ", wrap " << c.of(EventKind::Wrap) << ", action "
     << c.of(EventKind::Action)
-    << (c.of(EventKind::Segment) ? ", segment " + std::to_string(c.of(EventKind::Segment)) : std::string()) << "); samples " << c.of(EventKind::Sample) << ", stale predictions " << c.stale
+    << (c.of(EventKind::Segment) ? ", segment " + std::to_string(c.of(EventKind::Segment)) : std::string())
+    << (c.of(EventKind::Thermostat) ? ", thermostat " + std::to_string(c.of(EventKind::Thermostat)) : std::string())
+    << "); samples " << c.of(EventKind::Sample) << ", stale predictions " << c.stale
     << ", TC-elastic " << c.tc_elastic << "\n"
     << "collisions/disk  " << brief(s.collisions_per_particle) << "\n"
     << "simulated time   " << brief(s.sim_time) << "\n"
@@ -115,6 +117,7 @@ std::string to_json(const RunSummary& s) {
                          {"wrap", c.of(EventKind::Wrap)},
                          {"action", c.of(EventKind::Action)}};
   if (c.of(EventKind::Segment)) j["events_by_kind"]["segment"] = c.of(EventKind::Segment);
+  if (c.of(EventKind::Thermostat)) j["events_by_kind"]["thermostat"] = c.of(EventKind::Thermostat);
   j["samples"] = c.of(EventKind::Sample);
   j["stale_predictions"] = c.stale;
   j["tc_elastic"] = c.tc_elastic;

@@ -17,7 +17,8 @@ namespace ede::scene_detail {
 namespace {
 
 constexpr std::string_view kRootKeys[] = {"seed", "box",  "physics",  "engine", "log",
-                                          "species", "grow", "stop", "sampling", "actions", "start", "walls"};
+                                          "species", "grow", "stop", "sampling", "actions", "start", "walls",
+                                          "thermostat"};
 constexpr std::string_view kWallsKeys[] = {"segments", "polygons"};
 constexpr std::string_view kSegmentKeys[] = {"from", "to", "restitution"};
 constexpr std::string_view kPolygonKeys[] = {"points", "closed", "restitution"};
@@ -30,7 +31,7 @@ constexpr std::string_view kEngineKeys[] = {"scalar", "rebuild_interval"};
 constexpr std::string_view kLogKeys[] = {"keyframe_interval", "chunk_events", "compression_level"};
 constexpr std::string_view kSpeciesKeys[] = {"name",    "count",     "radius",  "mass",
                                              "density", "placement", "velocity", "inertia_factor",
-                                             "omega",   "spin_temperature"};
+                                             "omega",   "spin_temperature", "thermostat"};
 constexpr std::string_view kRadiusKeys[] = {"min", "max"};
 constexpr std::string_view kPlacementKeys[] = {"kind", "region", "packing_fraction", "lattice", "sampling",
                                                "positions"};
@@ -39,6 +40,8 @@ constexpr std::string_view kGrowKeys[] = {"packing_fraction", "pressure", "rate"
 constexpr std::string_view kStopKeys[] = {"time", "events", "collisions_per_particle", "energy_fraction"};
 constexpr std::string_view kSamplingKeys[] = {"interval", "collisions_per_disk"};
 constexpr std::string_view kActionKeys[] = {"time", "collisions_per_disk", "kind"};
+constexpr std::string_view kThermostatKeys[] = {"temperature", "rate", "species"};
+constexpr std::string_view kSpeciesThermostatKeys[] = {"temperature", "rate"};
 constexpr std::string_view kStartKeys[] = {"from", "at", "csv", "digest", "zero_momentum", "reverse_velocities"};
 
 }  // namespace
@@ -63,6 +66,8 @@ const Section start{"[start]", kStartKeys};
 const Section walls{"[walls]", kWallsKeys};
 const Section segment{"[[walls.segments]]", kSegmentKeys};
 const Section polygon{"[[walls.polygons]]", kPolygonKeys};
+const Section thermostat{"[thermostat]", kThermostatKeys};
+const Section species_thermostat{"[species.thermostat]", kSpeciesThermostatKeys};
 }  // namespace sections
 
 namespace {
@@ -73,7 +78,8 @@ const Section* const kAllSections[] = {&sections::root,      &sections::box,    
                                        &sections::radius,
                                        &sections::placement, &sections::velocity, &sections::grow, &sections::stop,
                                        &sections::sampling,  &sections::action, &sections::start,
-                                       &sections::walls,     &sections::segment, &sections::polygon};
+                                       &sections::walls,     &sections::segment, &sections::polygon,
+                                       &sections::thermostat, &sections::species_thermostat};
 
 bool contains(std::span<const std::string_view> list, std::string_view word) {
   return std::find(list.begin(), list.end(), word) != list.end();
@@ -203,7 +209,7 @@ const Section* section_for(std::string_view key) {  // the section of the table 
       {"pairs", &sections::pair},
       {"species", &sections::species},   {"radius", &sections::radius},   {"placement", &sections::placement},
       {"velocity", &sections::velocity}, {"grow", &sections::grow},     {"stop", &sections::stop},       {"sampling", &sections::sampling},
-      {"actions", &sections::action},    {"start", &sections::start}};
+      {"actions", &sections::action},    {"start", &sections::start},     {"thermostat", &sections::thermostat}};
   for (const auto& [name, section] : kTables) {
     if (name == key) return section;
   }

@@ -62,7 +62,7 @@ struct Section {
 
 namespace sections {
 extern const Section root, box, physics, wall_restitution, pair, engine, log, species, radius, placement, velocity,
-    grow, stop, sampling, action, start, walls, segment, polygon;
+    grow, stop, sampling, action, start, walls, segment, polygon, thermostat, species_thermostat;
 }
 
 // A checked scene tree as TOML text: keys in the order of the sections above (the order of the docs),

@@ -422,6 +422,35 @@ void read_rotation(const Reader& sp, SpeciesSpec& s) {
   if (kt) s.spin = {SpinSpec::Kind::Maxwell, 0, *kt};
 }
 
+// The Andersen thermostat: [thermostat] (every species, or those in `species`) or [species.thermostat] (one
+// species, overriding [thermostat] for it; rate = 0 leaves it out). Both need kT > 0 and the rate.
+std::optional<ThermostatSpec> read_thermostat(const Reader& parent, bool of_species) {
+  if (!parent.has("thermostat")) return std::nullopt;
+  if (!parent.get("thermostat")->is_table())
+    parent.fail("thermostat", "expected a table", of_species ? "write [species.thermostat] with temperature and rate"
+                                                             : "write [thermostat] with temperature and rate");
+  const Reader t = parent.section("thermostat");
+  t.check_keys(of_species ? sections::species_thermostat : sections::thermostat);
+  ThermostatSpec out;
+  const auto kt = t.number("temperature", Bounds::positive(), "give kT > 0, e.g. temperature = 1.0");
+  if (!kt) missing(t, "temperature", "the thermostat's kT", "temperature = 1.0");
+  const auto rate = t.number("rate", of_species ? Bounds::non_negative() : Bounds::positive(),
+                             of_species ? "give the redraws per disk per unit time, >= 0 (0: not thermostatted)"
+                                        : "give the redraws per disk per unit time, > 0, e.g. rate = 0.1");
+  if (!rate) missing(t, "rate", "how often each disk's velocity is redrawn (per disk, per unit time)", "rate = 0.1");
+  out.temperature = *kt;
+  out.rate = *rate;
+  if (const toml::array* names = t.array("species")) {
+    for (std::size_t i = 0; i < names->size(); ++i) {
+      const auto name = names->get(i)->value<std::string>();
+      if (!name) t.fail_item("species", i, "expected a species name", "write species = [\"gas\"]");
+      out.species.push_back(*name);
+    }
+    if (out.species.empty()) t.fail("species", "an empty list covers no disk", "list species, or leave the key out (every species)");
+  }
+  return out;
+}
+
 // Explicit positions: the centre inside the box, and with walls at least the smallest radius from them.
 void check_positions(const Reader& sp, const SpeciesSpec& s, const Scene& scene) {
   const Reader p = sp.section("placement");
@@ -493,6 +522,7 @@ SpeciesSpec read_species(const toml::node& node, std::size_t i, const Reader& to
   s.mass = read_mass(sp);
   s.velocity = read_velocity(sp, s.count);
   read_rotation(sp, s);
+  s.thermostat = read_thermostat(sp, true);
   if (s.placement.kind == PlacementKind::Explicit) check_positions(sp, s, scene);
   record_spots(*table, s);
   return s;
@@ -620,6 +650,32 @@ bool elastic_in_effect(const Scene& scene) {
   return all;
 }
 
+// The thermostat names real species and runs in the engines that have it: no gravity, segments or rotation.
+void check_thermostat(const Reader& top, const Scene& scene) {
+  if (!scene.thermostatted()) return;
+  const Reader t = top.section("thermostat");
+  if (scene.physics.thermostat && !scene.start)
+    for (const std::string& name : scene.physics.thermostat->species) {
+      bool found = false;
+      for (const SpeciesSpec& sp : scene.species) found = found || sp.name == name;
+      if (!found) {
+        std::string known;
+        for (const SpeciesSpec& sp : scene.species) known += (known.empty() ? "" : ", ") + sp.name;
+        t.fail("species", "there is no species '" + name + "'", "use the names of the species: " + known);
+      }
+    }
+  const auto refuse = [&](std::string_view what) {
+    const std::string w(what);
+    if (scene.physics.thermostat)
+      t.fail_here("the thermostat with " + w + " is not supported yet", "remove the thermostat, or the " + w);
+    top.fail("species", "a species' thermostat with " + w + " is not supported yet",
+             "remove [species.thermostat], or the " + w);
+  };
+  if (scene.physics.has_gravity()) refuse("gravity");
+  if (!scene.physics.segments.empty()) refuse("wall segments");
+  if (scene.rotates()) refuse("rough or spinning disks");
+}
+
 // Rules that span tables: pair restitution names real species; gravity needs walls (in a periodic box
 // everything would fall forever) and cannot stop on kinetic energy (it changes between collisions).
 void check_physics(const Reader& top, const Scene& scene) {
@@ -647,6 +703,7 @@ void check_physics(const Reader& top, const Scene& scene) {
   if (scene.rotates() && !scene.physics.segments.empty())
     p.fail("roughness", "rough or spinning disks with wall segments are not supported yet",
            "remove the [walls] segments, or make the disks smooth (physics.roughness = -1, no species omega)");
+  check_thermostat(top, scene);
   const StopSpec& st = scene.stop;
   if (st.energy_fraction && !st.time && !st.events && !st.collisions_per_particle && elastic_in_effect(scene))
     top.section("stop").fail("energy_fraction",
@@ -662,6 +719,7 @@ Scene scene_from_tree(const toml::table& root, const Origin& origin) {
   scene.seed = static_cast<std::uint64_t>(top.integer("seed", 0).value_or(1));
   read_box(top, scene);
   scene.physics = read_physics(top);
+  scene.physics.thermostat = read_thermostat(top, false);
   read_walls(top, scene);
   read_engine(top, scene);
   scene.log = read_log(top);
