@@ -1,4 +1,4 @@
-# The messages of an ede event log (.ede), format versions 1 and 2. The framing around them (file header,
+# The messages of an ede event log (.ede), format versions 1, 2 and 3. The framing around them (file header,
 # record headers, zstd frames, trailer) and the column encodings are described in FORMAT.md beside this
 # file. Every scalar of the simulation (times, positions, velocities, radii, masses) is stored as the raw
 # little-endian bytes of the run's scalar type, so a log is exact for float, double and long double runs.
@@ -62,10 +62,12 @@ struct Chunk {
   firstEvent @0 :UInt64;   # index of the chunk's first event in the log (0-based)
   count @1 :UInt32;
   times @2 :Data;          # event times
-  kinds @3 :Data;          # one byte per event: 0 pair, 1 wall, 3 wrap, 4 action (ede::EventKind); encoding 2: + 16 if TC-elastic
+  kinds @3 :Data;          # one byte per event: 0 pair, 1 wall, 3 wrap, 4 action, 6 segment, 8 thermostat (encoding 3)
+                           # (ede::EventKind); encoding 2 and 3: + 16 if TC-elastic
   disks @4 :Data;          # the first disk i of pair, wall and wrap events
   partners @5 :Data;       # pair: j - i; wall: wall id; wrap: direction
-  velocitiesRaw @6 :Data;        # encoding 1, pair: v_i' as raw scalars, byte-plane shuffled; encoding 2: empty
+  velocitiesRaw @6 :Data;        # encoding 1, pair: v_i' as raw scalars, byte-plane shuffled; encoding 2: empty;
+                                 # encoding 3: a thermostat event's v' as raw scalars, byte-plane shuffled
   velocityResiduals @7 :Data;    # encoding 1: pair v_j' against momentum, wall v' against reflection;
                                  # encoding 2: pair v_i', v_j' and wall v' against the collision rules
   runId @8 :UInt32;              # the header's runId (0 in logs written before it)
@@ -84,7 +86,8 @@ struct Keyframe {
   t @7 :Data;
   lastPartner @8 :List(Int32);  # resumable keyframes: the engine's last-partner ids
   lastCollision @9 :Data;       # resumable keyframes of TC runs: each disk's last collision time
-  engineCounts @10 :List(UInt64);  # resumable: engine counters by EventKind, then stale, then tcElastic
+  engineCounts @10 :List(UInt64);  # resumable: engine counters by EventKind 0-5, then stale, then tcElastic, then
+                                   # segment (runs with segments); version 3: always segment, step, thermostat
   nextSample @11 :UInt64;       # resumable: samples already taken
   nextAction @12 :UInt64;       # resumable: actions already done
   sameTimeEvents @13 :UInt64;   # resumable: the stall detector's count

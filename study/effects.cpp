@@ -48,6 +48,11 @@ std::vector<EffectConfig> effect_configs() {
       // rows above are what they cost; the all-effects engine has no rotation, so that column stays empty.
       {"rough disks (beta = beta_w = 1)", {"physics.roughness=1", "physics.wall_roughness=1"}, false},
       {"rough disks (beta = 0.5, xi = 0.98)", {inelastic_pairs, "physics.roughness=0.5"}, false},
+      // The Andersen thermostat (one global clock, a redraw now and then): the thermostat engine's cost on
+      // the same gas, redrawing rarely (0.01 per disk per unit time) and often (1). Scenes without it never
+      // run that engine; the all-effects engine has none, so that column stays empty.
+      {"thermostat (nu = 0.01)", {"thermostat.temperature=1", "thermostat.rate=0.01"}, false},
+      {"thermostat (nu = 1)", {"thermostat.temperature=1", "thermostat.rate=1"}, false},
       {"every effect (weak g)", {inelastic_pairs, "physics.pairs[0].restitution=0.9", "physics.wall_restitution=0.9",
                                  "physics.tc=1e-5", "physics.gravity=[0, -0.001]"}},
   };

@@ -8,7 +8,8 @@ from .state import State
 
 __all__ = ["Log", "open"]
 
-EVENT_KINDS = ("pair", "wall", "cell", "wrap", "action", "sample")
+# By the number a log stores (ede/events.hpp); 7 is the square wells' step events (issue 38).
+EVENT_KINDS = ("pair", "wall", "cell", "wrap", "action", "sample", "segment", "step", "thermostat")
 
 
 class Log:

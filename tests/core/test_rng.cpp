@@ -5,6 +5,7 @@
 // with an independent Python transcription of both generators, as were the seeded and stream values.
 // Statistical tolerances are 5 standard errors of the estimate (or chi-square at p ~ 1e-6): a correct
 // generator fails one of them about once in a million seeds, and the seeds here are fixed.
+#include <algorithm>
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -182,4 +183,44 @@ TEST_CASE("normal_pair gives independent standard normals", "[rng][stats]") {
   CHECK(std::abs(var - 1) < 5 * std::sqrt(2 / n));
   CHECK(std::abs(kurtosis - 3) < 5 * std::sqrt(24 / n));
   CHECK(std::abs(cross / pairs) < 5 / std::sqrt(double(pairs)));
+}
+
+// exact_log: the thermostat's draws depend on no libm. Against std::log (glibc's is correctly rounded in
+// practice) within 2 units in the last place over 20 orders of magnitude each way, subnormals included,
+// and exactly 0 at 1.
+TEST_CASE("exact_log agrees with std::log to 2 ulp, from subnormals to 1e300", "[rng]") {
+  CHECK(ede::exact_log(1.0) == 0.0);
+  CHECK(ede::exact_log(2.0) == Approx(std::log(2.0)).epsilon(1e-16));
+  ede::Rng rng(5);
+  int worst = 0;
+  for (int k = 0; k < 200000; ++k) {
+    const double x = std::ldexp(1.0 + rng.uniform01(), int(rng.below(2100)) - 1070);
+    const double a = ede::exact_log(x), b = std::log(x);
+    const double ulp = std::nextafter(std::fabs(b), INFINITY) - std::fabs(b);
+    const int off = int(std::fabs(a - b) / ulp + 0.5);
+    worst = std::max(worst, off);
+  }
+  CHECK(worst <= 2);
+  CHECK(ede::exact_log(0x1p-1074) == Approx(std::log(0x1p-1074)).epsilon(1e-15));
+}
+
+TEST_CASE("normal_pair_exact and exponential_exact have the moments of their laws", "[rng]") {
+  ede::Rng rng(9);
+  const int n = 400000;
+  double s1 = 0, s2 = 0, s4 = 0, c = 0, e1 = 0, e2 = 0;
+  for (int k = 0; k < n / 2; ++k) {
+    double a = 0, b = 0;
+    rng.normal_pair_exact(a, b);
+    s1 += a + b, s2 += a * a + b * b, s4 += a * a * a * a + b * b * b * b, c += a * b;
+    const double e = rng.exponential_exact();
+    e1 += e, e2 += e * e;
+  }
+  // Standard errors: mean 1/sqrt(n), variance sqrt(2/n), fourth moment sqrt(96/n), product 1/sqrt(n/2).
+  CHECK(std::fabs(s1 / n) < 5 / std::sqrt(double(n)));
+  CHECK(std::fabs(s2 / n - 1) < 5 * std::sqrt(2.0 / n));
+  CHECK(std::fabs(s4 / n - 3) < 5 * std::sqrt(96.0 / n));
+  CHECK(std::fabs(c / (n / 2)) < 5 / std::sqrt(n / 2.0));
+  // Exponential of mean 1: variance 1 (standard errors sqrt(2/n) and sqrt(20/n) for n/2 draws).
+  CHECK(std::fabs(e1 / (n / 2) - 1) < 5 * std::sqrt(2.0 / n));
+  CHECK(std::fabs(e2 / (n / 2) - 2) < 5 * std::sqrt(40.0 / n));
 }

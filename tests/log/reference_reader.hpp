@@ -1,4 +1,4 @@
-// A reference reader of the chunk columns and state of an ede log (format versions 1 and 2), written from
+// A reference reader of the chunk columns and state of an ede log (format versions 1, 2 and 3), written from
 // schema/FORMAT.md alone, as the test oracle for the fast reader (log/chunk_decode.cpp, replay/replay.cpp).
 //
 // Plain on purpose: no engine or library code for the columns, predictions or state updates (only the
@@ -323,6 +323,8 @@ class Reader {
         i = std::int32_t(disks.varint());
         const U128 p = partners.varint();
         j = kind == 0 ? std::int32_t(i + unzig(p)) : std::int32_t(p);
+      } else if (kind == 8) {  // version 3, thermostat: a disk, no partner
+        i = std::int32_t(disks.varint());
       }
       if (version_ >= 2) {
         const U128 code = times.varint();
@@ -436,6 +438,11 @@ class Reader {
         if (j == 1) a.x = a.x + lx_;
         if (j == 2) a.y = a.y - ly_;
         if (j == 3) a.y = a.y + ly_;
+      } else if (kind == 8) {  // the redrawn velocity, raw
+        Record<T>& a = disk_[std::size_t(i)];
+        bring(a, t);
+        a.vx = scalar_at<T>(raw.data() + raw_at), a.vy = scalar_at<T>(raw.data() + raw_at + kWidth<T>);
+        raw_at += 2 * kWidth<T>;
       } else if (kind == 4) {
         for (Record<T>& d : disk_) {
           bring(d, t);

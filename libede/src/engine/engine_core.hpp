@@ -165,7 +165,7 @@ class Engine final : public EngineApi<T> {
         ++done;
         if (s.counts.of(EventKind::Pair) >= s.schedule.next_pair_target) done += on_pair_target(s);
         if (const RunStatus st = check_stops(s); st != RunStatus::Running) return finish(st);
-        if (s.opt.rebuild_interval && s.counts.events() % s.opt.rebuild_interval == 0) rebuild_predictions(s);
+        if (s.opt.rebuild_interval && s.events_done() % s.opt.rebuild_interval == 0) rebuild_predictions(s);
       } else if (t_action != kNever<T> && t_action <= t_sample && t_action <= t_limit &&
                  (!Fx::kThermostat || t_action <= t_heat)) {
         // Everything that happens at time <= t, actions included, happens before an observer looks at t.
@@ -177,7 +177,7 @@ class Engine final : public EngineApi<T> {
         redraw_velocity(s, t_heat);
         ++done;
         if (const RunStatus st = check_stops(s); st != RunStatus::Running) return finish(st);
-        if (s.opt.rebuild_interval && s.counts.events() % s.opt.rebuild_interval == 0) rebuild_predictions(s);
+        if (s.opt.rebuild_interval && s.events_done() % s.opt.rebuild_interval == 0) rebuild_predictions(s);
       } else if (t_sample != kNever<T> && t_sample <= t_limit &&
                  !frozen_after(s, t_sample, std::min(next.time, t_heat), t_action, t_stop)) {
         take_sample(s, t_sample);

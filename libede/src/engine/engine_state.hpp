@@ -136,6 +136,14 @@ struct EngineState {
       return false;
   }
 
+  // counts.events(), without the thermostat's always-zero term where the engine has none.
+  std::uint64_t events_done() const {
+    if constexpr (Fx::kThermostat)
+      return counts.events();
+    else
+      return counts.events_but_redraws();
+  }
+
   bool is_big(const Disk<T>& d) const { return d.r > big_radius; }
   const BigDisk& big_entry(std::int32_t i) const {
     return *std::find_if(big.begin(), big.end(), [&](const BigDisk& b) { return b.id == i; });

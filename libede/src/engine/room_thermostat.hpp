@@ -33,7 +33,7 @@ typename S::Scalar thermostat_time(const S& s) {
 template <class S>
 void restart_thermostat_clock(S& s) {
   if constexpr (S::Effects::kThermostat) {
-    Rng rng = Rng::for_stream(s.thermostat.seed, kThermostatStreams + 2 * s.counts.events() + 1);
+    Rng rng = Rng::for_stream(s.thermostat.seed, kThermostatStreams + 2 * s.events_done() + 1);
     s.thermostat.next = s.thermostat.draw_next(s.now, rng);
   }
 }

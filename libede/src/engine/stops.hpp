@@ -142,7 +142,7 @@ RunStatus check_stops(S& s) {
   }
   if constexpr (S::Effects::kDissipative)
     if (s.dissipation.too_slow >= 0) return too_slow_status(s);
-  if (s.opt.stop.events && s.counts.events() >= *s.opt.stop.events) return RunStatus::ReachedEvents;
+  if (s.opt.stop.events && s.events_done() >= *s.opt.stop.events) return RunStatus::ReachedEvents;
   if (s.opt.stop.collisions_per_particle && s.counts.of(EventKind::Pair) >= s.schedule.pairs_to_stop)
     return RunStatus::ReachedCollisions;
   if constexpr (S::Effects::kDissipative)
