@@ -85,7 +85,7 @@ TEST_CASE("thermostat: a gas at rest relaxes to Maxwell-Boltzmann at the thermos
   REQUIRE(e->run() == RunStatus::ReachedTime);
   std::vector<double> speeds, masses;
   for (std::size_t k = 0; k < rec.sample_states.size(); ++k) {
-    if (rec.sample_times[k] < 20) continue;  // ten relaxation times
+    if (rec.sample_times[k] <= 20) continue;  // ten relaxation times
     for (std::size_t i = 0; i < s.size(); ++i) {
       speeds.push_back(std::hypot(rec.sample_states[k][i].vx, rec.sample_states[k][i].vy));
       masses.push_back(s.mass[i]);
@@ -131,10 +131,11 @@ TEST_CASE("thermostat: an elastic gas's kinetic energy fluctuates canonically, <
 // disk per unit time). The thermostat brings nu N (T_b - T). In the steady state, with E = N T:
 //   T = T_b / (1 + (1 - xi^2) omega / (2 nu)),
 // with omega measured in the run itself (so no equation of state for the collision rate is assumed).
-// Tolerance 4 %: the steady state's velocities are close to, not exactly, Maxwellian.
+// Tolerance 4 % (the mean over 30 relaxation times 1/nu of 400 disks has a standard error near 1 %, omega
+// one near 0.5 %): the steady state's velocities are close to, not exactly, Maxwellian.
 TEST_CASE("thermostat: a driven inelastic gas settles at the granular temperature of the energy balance", "[thermostat][slow]") {
-  const double kT = 1.0, nu = 0.25, xi = 0.8;
-  InitialState s = lattice_gas(14, 0.25, 28, 9, 1.0);  // 196 disks, packing fraction 0.049
+  const double kT = 1.0, nu = 0.1, xi = 0.8;
+  InitialState s = lattice_gas(20, 0.25, 28, 9, 1.0);  // 400 disks, packing fraction 0.1
   const double n = double(s.size());
   EngineOptions o = thermostatted(kT, nu, 400);
   o.physics.restitution = xi;
@@ -160,9 +161,9 @@ TEST_CASE("thermostat: a driven inelastic gas settles at the granular temperatur
   const double omega = 2 * double(pairs.after_100) / n / 300;
   const double expected = kT / (1 + (1 - xi * xi) * omega / (2 * nu));
   INFO("T = " << T << ", omega = " << omega << ", expected " << expected);
-  CHECK(T < 0.8 * kT);  // well below the bath: the balance is not trivial
+  CHECK(T < 0.7 * kT);  // well below the bath: the balance is not trivial
   CHECK(T == Approx(expected).epsilon(0.04));
-  CHECK(early == Approx(late).epsilon(0.04));  // steady
+  CHECK(early == Approx(late).epsilon(0.06));  // steady: each half-window mean has a standard error near 2 %
 }
 
 TEST_CASE("thermostat: the same options give the same events; a species' own thermostat overrides", "[thermostat]") {

@@ -82,7 +82,8 @@ class EnergyWalk {
         set(std::size_t(e.i), e.vix, e.viy, e.wi);
         ++walls_;
         break;
-      case EventKind::Segment: set(std::size_t(e.i), e.vix, e.viy, T(0)); break;
+      case EventKind::Segment:
+      case EventKind::Thermostat: set(std::size_t(e.i), e.vix, e.viy, T(0)); break;
       case EventKind::Action: resync(); break;
       default: break;  // wraps move a disk, not its velocity
     }

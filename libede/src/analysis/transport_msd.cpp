@@ -102,7 +102,8 @@ Result<MeanSquareDisplacement> mean_square_displacement(const Log& log, const Tr
         moved(e.j, e.time, e.xj, e.yj, e.vjx, e.vjy);
         break;
       case EventKind::Wall:
-      case EventKind::Segment: moved(e.i, e.time, e.xi, e.yi, e.vix, e.viy); break;
+      case EventKind::Segment:
+      case EventKind::Thermostat: moved(e.i, e.time, e.xi, e.yi, e.vix, e.viy); break;
       case EventKind::Wrap:
         if (e.i >= 0 && std::size_t(e.i) < local.size() && local[e.i] >= 0) {
           Track& d = track[local[e.i]];

@@ -111,7 +111,8 @@ Result<VelocityAutocorrelation> velocity_autocorrelation(const Log& log, const T
         change(e.j, e.time, e.vjx, e.vjy);
         break;
       case EventKind::Wall:
-      case EventKind::Segment: change(e.i, e.time, e.vix, e.viy); break;
+      case EventKind::Segment:
+      case EventKind::Thermostat: change(e.i, e.time, e.vix, e.viy); break;
       case EventKind::Action:
         for (std::size_t d = 0; d < n; ++d) c.change(h[d], d % groups, e.time, -h[d].vx, -h[d].vy);
         break;
