@@ -66,8 +66,8 @@ std::vector<BadLog> make_bad_logs() {
   add(BadLog::Refuse, "empty", "", "too short");
   add(BadLog::Refuse, "magic", "\x7f" "ELF" + bytes.substr(4), "not an ede event log");
   std::string newer = bytes;
-  newer[8] = 3;
-  add(BadLog::Refuse, "version", newer, "version 3");
+  newer[8] = 4;  // 3 is read (thermostat events)
+  add(BadLog::Refuse, "version", newer, "version 4");
   add(BadLog::Refuse, "scene-file", bytes_of(source_path("examples/gas.toml")), "not an ede event log");
   add(BadLog::Refuse, "cut-10", bytes.substr(0, 10), "too short");
   add(BadLog::Refuse, "cut-header", bytes.substr(0, 100), "header record is cut short");

@@ -687,5 +687,5 @@ TEST_CASE("ede-replay convert writes version 1 and back, info names the version,
   REQUIRE(replay("convert " + v1 + " -o " + again, "convert-to-v2").status == 0);
   CHECK(read_file(again) == read_file(v2));  // the same writer, the same bytes
   CHECK(replay("convert " + v2 + " -o " + v2, "convert-same").status == 2);
-  CHECK(replay("convert " + v2 + " -o " + again + "x --format-version 3", "convert-bad").status == 2);
+  CHECK(replay("convert " + v2 + " -o " + again + "x --format-version 4", "convert-bad").status == 2);
 }
