@@ -5,6 +5,7 @@
 
 #include "ede/scene.hpp"
 #include "engine/engine.hpp"
+#include "scene_test_support.hpp"
 
 namespace {
 
@@ -28,21 +29,14 @@ time = 1.0
 std::string with_top(const std::string& lines) { return kScene + lines + "\n"; }  // tables after [stop]
 std::string with_dust(const std::string& lines) { return kScene.substr(0, kScene.find("[stop]")) + lines + "\n[stop]\ntime = 1.0\n"; }
 
+// A refusal names the file, its line and a fix (scene_error checks the fix).
 std::string error_of(const std::string& text) {
-  auto result = ede::parse_scene_text(text, "scene.toml");
-  REQUIRE_FALSE(result.ok());
-  INFO(result.error().message);
-  CHECK_THAT(result.error().message, Contains("scene.toml:"));
-  CHECK_THAT(result.error().message, Contains("Fix: "));
-  return result.error().message;
+  const std::string message = ede::test::scene_error(text);
+  CHECK_THAT(message, Contains("scene.toml:"));
+  return message;
 }
 
-ede::Scene load(const std::string& text) {
-  auto result = ede::parse_scene_text(text, "scene.toml");
-  INFO((result.ok() ? std::string() : result.error().message));
-  REQUIRE(result.ok());
-  return result.value();
-}
+ede::Scene load(const std::string& text) { return ede::test::scene_of(text); }
 
 }  // namespace
 

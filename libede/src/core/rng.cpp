@@ -82,17 +82,27 @@ void Rng::unit_vector(double& ux, double& uy) {
   }
 }
 
-void Rng::normal_pair(double& z0, double& z1) {
+namespace {
+
+// Marsaglia's polar method with the logarithm `ln`.
+template <class Ln>
+void polar_pair(Rng& rng, double& z0, double& z1, Ln ln) {
   for (;;) {
-    const double u = 2.0 * uniform01() - 1.0;
-    const double v = 2.0 * uniform01() - 1.0;
+    const double u = 2.0 * rng.uniform01() - 1.0;
+    const double v = 2.0 * rng.uniform01() - 1.0;
     const double s = u * u + v * v;
     if (s >= 1.0 || s == 0.0) continue;
-    const double f = std::sqrt(-2.0 * std::log(s) / s);
+    const double f = std::sqrt(-2.0 * ln(s) / s);
     z0 = u * f;
     z1 = v * f;
     return;
   }
+}
+
+}  // namespace
+
+void Rng::normal_pair(double& z0, double& z1) {
+  polar_pair(*this, z0, z1, [](double s) { return std::log(s); });
 }
 
 double exact_log(double x) {
@@ -113,17 +123,6 @@ double exact_log(double x) {
   return de * kLn2Hi + (de * kLn2Lo + ln_m);
 }
 
-void Rng::normal_pair_exact(double& z0, double& z1) {
-  for (;;) {
-    const double u = 2.0 * uniform01() - 1.0;
-    const double v = 2.0 * uniform01() - 1.0;
-    const double s = u * u + v * v;
-    if (s >= 1.0 || s == 0.0) continue;
-    const double f = std::sqrt(-2.0 * exact_log(s) / s);
-    z0 = u * f;
-    z1 = v * f;
-    return;
-  }
-}
+void Rng::normal_pair_exact(double& z0, double& z1) { polar_pair(*this, z0, z1, exact_log); }
 
 }  // namespace ede

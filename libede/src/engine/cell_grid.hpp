@@ -78,7 +78,9 @@ class CellGrid {
     d.cell = d.next_in_cell = kNone;
   }
 
-  void move(std::int32_t disk, std::int32_t cell) {
+  // Forced inline: it runs at every cell crossing, and when the engine table grew by two thermostat
+  // engines (issue 39) GCC stopped inlining it into cross_cell, +8 instructions per event (callgrind).
+  [[gnu::always_inline]] void move(std::int32_t disk, std::int32_t cell) {
     remove(disk);
     insert(disk, cell);
   }

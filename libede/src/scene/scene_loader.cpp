@@ -650,20 +650,22 @@ bool elastic_in_effect(const Scene& scene) {
   return all;
 }
 
+// A species name in `key` of table r (a pair's, the thermostat's) is one of the scene's species.
+void check_species_named(const Reader& r, std::string_view key, const std::string& name, const Scene& scene) {
+  bool found = false;
+  for (const SpeciesSpec& sp : scene.species) found = found || sp.name == name;
+  if (found) return;
+  std::string known;
+  for (const SpeciesSpec& sp : scene.species) known += (known.empty() ? "" : ", ") + sp.name;
+  r.fail(key, "there is no species '" + name + "'", "use the names of the species: " + known);
+}
+
 // The thermostat names real species and runs in the engines that have it: no gravity, segments or rotation.
 void check_thermostat(const Reader& top, const Scene& scene) {
   if (!scene.thermostatted()) return;
   const Reader t = top.section("thermostat");
   if (scene.physics.thermostat && !scene.start)
-    for (const std::string& name : scene.physics.thermostat->species) {
-      bool found = false;
-      for (const SpeciesSpec& sp : scene.species) found = found || sp.name == name;
-      if (!found) {
-        std::string known;
-        for (const SpeciesSpec& sp : scene.species) known += (known.empty() ? "" : ", ") + sp.name;
-        t.fail("species", "there is no species '" + name + "'", "use the names of the species: " + known);
-      }
-    }
+    for (const std::string& name : scene.physics.thermostat->species) check_species_named(t, "species", name, scene);
   const auto refuse = [&](std::string_view what) {
     const std::string w(what);
     if (scene.physics.thermostat)
@@ -681,15 +683,7 @@ void check_thermostat(const Reader& top, const Scene& scene) {
 void check_physics(const Reader& top, const Scene& scene) {
   const Reader p = top.section("physics");
   for (const PairRestitution& pair : scene.start ? std::vector<PairRestitution>{} : scene.physics.pairs)
-    for (const std::string& name : {pair.a, pair.b}) {
-      bool found = false;
-      for (const SpeciesSpec& sp : scene.species) found = found || sp.name == name;
-      if (!found) {
-        std::string known;
-        for (const SpeciesSpec& sp : scene.species) known += (known.empty() ? "" : ", ") + sp.name;
-        p.fail("pairs", "there is no species '" + name + "'", "use the names of the species: " + known);
-      }
-    }
+    for (const std::string& name : {pair.a, pair.b}) check_species_named(p, "pairs", name, scene);
   if (scene.physics.has_gravity() && scene.boundary == BoundaryKind::Periodic)
     p.fail("gravity", "gravity needs walls: in a periodic box every disk would fall forever",
            "use box.boundary = \"walls\", or remove gravity");
