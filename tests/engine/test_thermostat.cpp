@@ -166,7 +166,7 @@ TEST_CASE("thermostat: a driven inelastic gas settles at the granular temperatur
   CHECK(early == Approx(late).epsilon(0.06));  // steady: each half-window mean has a standard error near 2 %
 }
 
-TEST_CASE("thermostat: the same options give the same events; a species' own thermostat overrides", "[thermostat]") {
+TEST_CASE("thermostat: the same options give the same events, and a species' own thermostat overrides", "[thermostat]") {
   InitialState s = resting_mixture(6, 0.2, 12);
   s.species_names = {"a", "b"};
   for (std::size_t i = 0; i < s.size(); ++i) s.species[i] = std::int32_t(i % 2);

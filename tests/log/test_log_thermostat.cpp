@@ -98,7 +98,7 @@ TEST_CASE("thermostat log: each event names its disk and its new velocity, the s
   CHECK(seen == 20);
 }
 
-TEST_CASE("thermostat log: the same scene gives the same bytes; an interrupted run resumes to them", "[log][thermostat][resume]") {
+TEST_CASE("thermostat log: the same scene gives the same bytes, and an interrupted run resumes to them", "[log][thermostat][resume]") {
   const std::string whole = run_to_log("thermo-whole.ede"), again = run_to_log("thermo-again.ede");
   CHECK(read_file(whole) == read_file(again));
   const std::string cut = temp_path("thermo-cut.ede");
@@ -117,7 +117,7 @@ TEST_CASE("thermostat log: the same scene gives the same bytes; an interrupted r
   CHECK(read_file(cut) == read_file(whole));
 }
 
-TEST_CASE("thermostat log: a run without a thermostat still writes version 2; version 3 cannot become 2", "[log][thermostat]") {
+TEST_CASE("thermostat log: a run without a thermostat still writes version 2, and version 3 cannot become 2", "[log][thermostat]") {
   const std::string plain = temp_path("thermo-plain.ede");
   const Scene without = parse_scene_text(scene_text("double", false), "plain.toml", {{"stop.time=2"}}).value();
   {

@@ -40,7 +40,7 @@ ede::Scene load(const std::string& text) { return ede::test::scene_of(text); }
 
 }  // namespace
 
-TEST_CASE("scene thermostat: none by default; [thermostat] and a species' own reach the engine", "[scene][thermostat]") {
+TEST_CASE("scene thermostat: none by default, the scene's and a species' own reach the engine", "[scene][thermostat]") {
   CHECK_FALSE(load(kScene).thermostatted());
   const ede::Scene s = load(with_dust("[species.thermostat]\ntemperature = 2.5\nrate = 0.5") + "\n[thermostat]\ntemperature = 1.5\nrate = 0.25\nspecies = [\"gas\"]\n");
   REQUIRE(s.thermostatted());
