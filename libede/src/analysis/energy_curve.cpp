@@ -87,7 +87,8 @@ Result<EnergyCurve> energy_curve(const Log& log, const EnergyCurveRequest& reque
   const std::string& path = log.info().path;
   EnergyCurve c;
   c.mean_free_time = o.mean_free_time();
-  if (auto scene = log.scene()) c.restitution = scene.value().physics.restitution;
+  bool driven = false;  // the Andersen thermostat feeds energy in: no free cooling to compare with
+  if (auto scene = log.scene()) c.restitution = scene.value().physics.restitution, driven = scene.value().thermostatted();
   const double from = request.from.value_or(0), to = request.to.value_or(o.end_time);
   if (!(from >= 0) || !(to >= from) || to > o.end_time)
     return Error{path + ": the range " + brief(from) + " to " + brief(to) +
@@ -101,8 +102,13 @@ Result<EnergyCurve> energy_curve(const Log& log, const EnergyCurveRequest& reque
   if (!series) return series.error();
   c.series = std::move(series).value();
   c.initial_energy = c.series.kinetic_energy.front();
-  haff_time(c);
-  if (c.restitution < 1) {
+  if (driven) {
+    c.enskog_note = "the Andersen thermostat drives this gas, so it does not cool freely (Haff's law); its steady "
+                    "temperature: docs/physics.md, \"Andersen thermostat\"";
+  } else {
+    haff_time(c);
+  }
+  if (c.restitution < 1 && !driven) {
     auto e = enskog_at(log, 0);
     if (!e) return e.error();
     if (e.value().applicable && e.value().rate > 0) {
