@@ -181,7 +181,8 @@ std::string RecordWriter::write_job(Job& job) {
     offset_ += job.bytes.size();
     return e.empty() ? e : "writing '" + path_ + "': " + e;
   }
-  if (job.build) {
+  const bool built = bool(job.build);
+  if (built) {
     job.content = job.build();
     job.build = nullptr;  // frees the chunk's events now
   }
@@ -191,13 +192,26 @@ std::string RecordWriter::write_job(Job& job) {
   if (bound > two_pass_above_) {
     if (std::string e = write_two_pass(job); !e.empty()) return e;
   } else {
-    const std::unique_ptr<unsigned char[]> out(new unsigned char[logfmt::kRecordHeaderSize + bound]);  // not zero-filled
-    const std::size_t n = ZSTD_compress2(cctx, out.get() + logfmt::kRecordHeaderSize, bound, job.content.data(), size);
-    job.content.release();  // freed before the write
+    // A chunk's output block is kept for the next (compressed_); a larger record's is its own, freed after.
+    const std::size_t need = logfmt::kRecordHeaderSize + bound;
+    std::unique_ptr<unsigned char[]> own;
+    if (need > kKeptOutput) {
+      own.reset(new unsigned char[need]);  // not zero-filled
+    } else if (compressed_size_ < need) {
+      compressed_.reset();
+      compressed_.reset(new unsigned char[kKeptOutput]);
+      compressed_size_ = kKeptOutput;
+    }
+    unsigned char* const out = own ? own.get() : compressed_.get();
+    const std::size_t n = ZSTD_compress2(cctx, out + logfmt::kRecordHeaderSize, bound, job.content.data(), size);
+    if (built && recycle_)
+      recycle_(std::move(job.content));
+    else
+      job.content.release();  // freed before the write
     if (ZSTD_isError(n)) return std::string("compressing a log record: ") + ZSTD_getErrorName(n);
     job.header.payload_size = n;
-    logfmt::encode_record_header(job.header, out.get());
-    const std::string e = write_all(fd_, out.get(), logfmt::kRecordHeaderSize + n);
+    logfmt::encode_record_header(job.header, out);
+    const std::string e = write_all(fd_, out, logfmt::kRecordHeaderSize + n);
     offset_ += logfmt::kRecordHeaderSize + n;
     if (!e.empty()) return "writing '" + path_ + "': " + e;
   }
