@@ -69,8 +69,9 @@ class FlatMessage {
 class FlatMessageBuilder final : public capnp::MessageBuilder {
  public:
   // `words`: the expected size of the whole message in words (root pointer, structs, lists, data).
-  // `recycled`: an earlier message's block, zeroed again and used if it is large enough (else freed).
-  explicit FlatMessageBuilder(std::size_t words, FlatMessage recycled = {});
+  // `recycled` (a caller that reuses blocks): an earlier message's block, zeroed again and taken if it is
+  // large enough, else freed and a block with room to spare reserved instead.
+  explicit FlatMessageBuilder(std::size_t words, FlatMessage* recycled = nullptr);
   ~FlatMessageBuilder() override;
   FlatMessageBuilder(const FlatMessageBuilder&) = delete;
   FlatMessageBuilder& operator=(const FlatMessageBuilder&) = delete;
