@@ -2,10 +2,11 @@
 //
 // Chunk boundaries are a function of the event index alone (every chunk_events events, and at every
 // keyframe), so a resumed run cut at a keyframe writes exactly the chunks the uninterrupted run wrote.
-// The event loop only copies each event, with the records of its disks just before it, into the open chunk's
-// buffer (log/logged_event.hpp); the columns are coded on the record writer's worker (ChunkCoder below)
-// from those alone. The worker builds records in submission order, so the bytes are those of coding on the
-// loop. Rejected: coding on the event loop (measured: at N = 1e4, log format 2's predictions took the
+// The event loop only copies each event (with its time's prediction where the engine did not vouch for it,
+// made from the records of its disks just before it) into the open batch's buffer (log/logged_event.hpp);
+// the columns are coded on the record writer's worker (ChunkCoder below) from those alone, batch by batch,
+// and the record is built at the chunk's end. The worker runs batches and records in submission order, so
+// the bytes are those of coding on the loop. Rejected: coding on the event loop (measured: at N = 1e4, log format 2's predictions took the
 // logging overhead from 8-14 % to 34 % with a second core free), and a replayed copy of the state on the
 // worker (its cache misses were most of the log's cost when loop and worker share one core).
 #include "log/log_writer.hpp"
