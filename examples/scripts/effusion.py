@@ -3,10 +3,11 @@
 
 Runs the scene, exports its states every 0.5 time units from the log (ede-replay export, extended XYZ),
 counts the disks right of the divider, N_right(t), and draws it against the kinetic-theory curve
-N/2 (1 - exp(-t / tau)), tau = pi A / (2 w_eff <|v|>): a 2D gas crosses a line at n <|v|> / pi per unit
-length and time, <|v|> = sqrt(pi kT / 2m) with kT from the kinetic energy (2D: E = N kT), and a disk of
-radius r gets through a hole of width w when its centre clears both end points: w_eff = w - pi r
-(averaged over the crossing angle). Prints the measured and predicted N_right at the end.
+N/2 (1 - exp(-t / tau)), tau = A / (2 w_eff <v_x+>): in equilibrium the centres cross a line at
+n <v_x+> = n sqrt(kT / (2 pi m)) per unit length and time (kT from the kinetic energy, 2D: E = N kT), and
+the line is open to centres over w_eff = w - 2r, where a centre stays at least r from both end points of
+the hole; A = (1 - 2r)^2 is the area a half offers the centres (docs/examples.md, "Effusion", derives it).
+Prints the measured and predicted N_right at the end.
 
 usage: effusion.py TOOLS_DIR OUT_DIR
 """
@@ -18,7 +19,8 @@ import sys
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "tools", "plot"))
 import ede_style  # noqa: E402
 
-HOLE, RADIUS, AREA = 0.05, 0.0005, 1.0
+HOLE, RADIUS = 0.05, 0.0005
+AREA = (1 - 2 * RADIUS) ** 2  # a half's area open to the centres
 
 
 def frames(path):
@@ -66,12 +68,12 @@ def main():
         kt = energy / n  # 2D, k = 1: E = N kT
         ts.append(t)
         right.append(sum(1 for x in xs if x > 1.0))
-    mean_speed = math.sqrt(math.pi * kt / 2)
-    w_eff = HOLE - math.pi * RADIUS
-    tau = math.pi * AREA / (2 * w_eff * mean_speed)
+    v_plus = math.sqrt(kt / (2 * math.pi))  # <v_x+> for m = 1
+    w_eff = HOLE - 2 * RADIUS
+    tau = AREA / (2 * w_eff * v_plus)
     theory = [n / 2 * (1 - math.exp(-t / tau)) for t in ts]
-    print(f"N = {n}, kT = {kt:.4f}, <|v|> = {mean_speed:.4f}, w_eff = {w_eff:.5f}, tau = {tau:.2f}")
-    print(f"initial rate: theory n <|v|> w_eff / pi = {n / AREA * mean_speed * w_eff / math.pi:.2f} per unit time")
+    print(f"N = {n}, kT = {kt:.4f}, <v_x+> = {v_plus:.4f}, w_eff = {w_eff:.5f}, tau = {tau:.2f}")
+    print(f"initial rate: theory n <v_x+> w_eff = {n / AREA * v_plus * w_eff:.2f} per unit time")
     print(f"N_right at t = {ts[-1]:g}: measured {right[-1]}, kinetic theory {theory[-1]:.1f} "
           f"(+- {math.sqrt(theory[-1]):.1f} counting noise)")
     fig, ax = ede_style.figure()

@@ -43,7 +43,9 @@ def distribution(log, t=None, *, times=None, species=None, quantity="speed", bin
 
 def energy_series(log, *, t0=None, t1=None, every=None, points=None):
     """Kinetic energy, total and per species, on a time grid (as ede-stats energy): time, kinetic_energy,
-    species_energy[name], pair/wall collisions, with Haff's law (haff_tau, haff_ratio) for inelastic runs."""
+    species_energy[name], pair/wall collisions, with Haff's law for inelastic runs: haff_ratio uses
+    enskog_tau (Enskog's rate at t = 0, +- enskog_tau_error), or haff_tau (calibrated on the collision count)
+    where Enskog does not apply."""
     return _report(_ede.energy_curve(_log(log), t0, t1, every, points))
 
 

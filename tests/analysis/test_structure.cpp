@@ -1,7 +1,7 @@
 // Structure analyses (structure.hpp) on hand-made states, where the answer is exact: g(r) of perfect
 // lattices, psi6 = 1 on a triangular lattice, the discrete Parseval sum rule and Bragg peaks of S(k), the
 // walled normalisation of g(r) on an ideal gas (statistical: |g - 1| < 4 Poisson sigma per bin), and the
-// contact-value fit on an exactly linear g.
+// contact-value fit on an exactly quadratic g.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
@@ -199,18 +199,19 @@ TEST_CASE("g(r) refuses r_max beyond half a periodic box and an unknown species"
   CHECK(!pair_correlation(s, o));
 }
 
-TEST_CASE("the contact value of an exactly linear g(r) is its intercept", "[analysis][structure]") {
+TEST_CASE("the contact value of an exactly quadratic g(r) is its intercept", "[analysis][structure]") {
   PairCorrelation g;
   for (int k = 0; k < 10; ++k) {
+    const double x = 0.01 * k + 0.005;
     g.r_lo.push_back(1 + 0.01 * k), g.r_hi.push_back(1 + 0.01 * (k + 1));
-    g.g.push_back(3 - 5 * (0.01 * k + 0.005));
+    g.g.push_back(3 - 5 * x + 40 * x * x);
     g.count.push_back(1e4);
   }
   const ContactValue c = contact_from_gr(g, 1.0, 0.08).value();
-  CHECK(c.value == Approx(3).epsilon(1e-12));
+  CHECK(c.value == Approx(3).epsilon(1e-12));  // a straight line through these bins gives 2.957
   CHECK(c.error > 0);
   CHECK(c.error < 0.1);
-  CHECK(!contact_from_gr(g, 1.0, 0.015));  // one bin only
+  CHECK(!contact_from_gr(g, 1.0, 0.035));  // three bins cannot show a quadratic's error
 }
 
 TEST_CASE("the Enskog and virial contact formulas invert their equations", "[analysis][structure]") {

@@ -126,7 +126,7 @@ TEST_CASE("a dilute periodic gas: g(sigma) three ways agree, and D is Enskog's w
   CHECK(std::fabs(c.from_collisions.value - c.from_pressure.value) <
         4 * std::hypot(c.from_collisions.error, c.from_pressure.error));
   CHECK(std::fabs(c.from_gr.value - c.from_collisions.value) < 4 * std::hypot(c.from_gr.error, c.from_collisions.error));
-  CHECK(c.from_gr.error < 0.05 * g_h);
+  CHECK(c.from_gr.error < 0.08 * g_h);  // the quadratic fit's error: 1.5 times the straight line's (5 %) for 200 frames
 
   TransportOptions o;
   o.from = 5, o.lag_step = 0.05, o.max_lag = 2, o.origins = 50;

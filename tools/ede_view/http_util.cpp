@@ -50,11 +50,21 @@ std::optional<FrameRequest> frame_request_param(const httplib::Request& req, htt
   return r.value();
 }
 
-void send_frame(httplib::Response& res, std::shared_ptr<const std::string> frame) {
-  res.set_header("Cache-Control", "no-store");
+void send_frame(httplib::Response& res, std::shared_ptr<const std::string> frame, FrameBudget& budget) {
   const std::size_t size = frame->size();
+  const std::uint64_t before = budget.used.fetch_add(size);
+  if (before > 0 && before + size > budget.limit) {
+    budget.used -= size;
+    return send_error(res, 503, "busy: " + std::to_string((before + (1u << 20) - 1) >> 20) +
+                                    " MiB of frames are being sent to other pages (ede-view --frame-memory " +
+                                    std::to_string(budget.limit >> 20) + "); ask again");
+  }
+  // Released when httplib drops the provider: the answer sent, or its connection closed or timed out.
+  std::shared_ptr<void> counted(nullptr, [&budget, size](void*) { budget.used -= size; });
+  res.set_header("Cache-Control", "no-store");
   res.set_content_provider(size, "application/octet-stream",
-                           [frame = std::move(frame)](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+                           [frame = std::move(frame), counted = std::move(counted)](
+                               std::size_t offset, std::size_t length, httplib::DataSink& sink) {
                              return sink.write(frame->data() + offset, length);
                            });
 }
@@ -102,8 +112,13 @@ std::vector<std::string> list_files(const std::vector<Root>& roots, const std::s
     fs::recursive_directory_iterator it(roots[k].canonical, fs::directory_options::skip_permission_denied, ec), end;
     for (; !ec && it != end && out.size() < limit; it.increment(ec)) {
       if (it.depth() >= 4) it.disable_recursion_pending();
-      if (it->is_regular_file(ec) && it->path().extension() == extension)
-        out.push_back(std::to_string(k) + ":" + fs::relative(it->path(), roots[k].canonical, ec).generic_string());
+      // Per entry its own error code: a broken or looping symlink skips that entry, not the rest.
+      std::error_code entry_ec;
+      if (!it->is_regular_file(entry_ec) || it->path().extension() != extension) continue;
+      // A symlink that leads out of the folder is not listed (resolve_under would refuse it anyway).
+      const fs::path target = fs::canonical(it->path(), entry_ec);
+      if (entry_ec || !inside(target, roots[k].canonical)) continue;
+      out.push_back(std::to_string(k) + ":" + fs::relative(it->path(), roots[k].canonical, entry_ec).generic_string());
     }
   }
   std::sort(out.begin(), out.end());

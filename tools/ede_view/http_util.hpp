@@ -8,6 +8,8 @@
 // symlinks, encodings and the many spellings of a path) and serving by absolute path.
 #pragma once
 
+#include <atomic>
+#include <cstdint>
 #include <filesystem>
 #include <httplib.h>
 #include <memory>
@@ -30,8 +32,18 @@ std::optional<double> number_param(const httplib::Request& req, httplib::Respons
 // A frame's packing from ?max= (default `default_max`), ?exact= and ?colour=; nothing and a 400 sent when bad.
 std::optional<FrameRequest> frame_request_param(const httplib::Request& req, httplib::Response& res,
                                                 std::size_t default_max);
-// A packed frame as the response's body, sent from the shared buffer (not copied: frames are megabytes).
-void send_frame(httplib::Response& res, std::shared_ptr<const std::string> frame);
+// The bytes of frames being sent: a frame is held until its page has read it (or the write timed out), so
+// pages that ask and do not read would otherwise hold as many frames as there are workers. Above the limit
+// (ede-view --frame-memory) a frame is refused with 503 and the page asks again later. A frame shared by
+// several answers (a live run's) is counted once per answer: the bound is conservative.
+struct FrameBudget {
+  std::uint64_t limit = 0;
+  std::atomic<std::uint64_t> used{0};
+};
+// A packed frame as the response's body, sent from the shared buffer (not copied: frames are megabytes),
+// counted in `budget` until the answer is done; a 503 naming the limit when it would pass it (a frame alone
+// larger than the whole budget is still sent when nothing else is in flight).
+void send_frame(httplib::Response& res, std::shared_ptr<const std::string> frame, FrameBudget& budget);
 
 // A folder ede-view may read from, by its canonical path.
 struct Root {

@@ -27,9 +27,18 @@ nlohmann::json scene_json(const std::string& name, const Scene& s) {
           {"box", {s.lx, s.ly}}};
 }
 
+// An override of the scene's [start] table: the keys that make a run start from a file (a log or a CSV
+// state) the server would then read wherever it lies. The scene files themselves are the operator's.
+bool names_a_file(const std::string& override_text) {
+  std::string key = override_text.substr(0, override_text.find('='));
+  key.erase(0, key.find_first_not_of(" \t"));
+  key.erase(key.find_last_not_of(" \t") + 1);
+  return key == "start" || key.rfind("start.", 0) == 0;
+}
+
 }  // namespace
 
-void add_live_routes(httplib::Server& server, const std::vector<Root>& roots, LiveRuns& runs) {
+void add_live_routes(httplib::Server& server, const std::vector<Root>& roots, LiveRuns& runs, FrameBudget& budget) {
   server.Get("/api/scenes", [roots](const httplib::Request&, httplib::Response& res) {
     send_json(res, nlohmann::json{{"scenes", list_files(roots, ".toml")}}.dump());
   });
@@ -53,6 +62,11 @@ void add_live_routes(httplib::Server& server, const std::vector<Root>& roots, Li
       if (!body["set"].is_array()) return send_error(res, 400, "'set' must be a list of \"key=value\" texts");
       for (const auto& o : body["set"]) {
         if (!o.is_string()) return send_error(res, 400, "'set' must be a list of \"key=value\" texts");
+        if (names_a_file(o.get<std::string>()))
+          return send_error(res, 403, "'" + o.get<std::string>().substr(0, 100) +
+                                          "': the page may not set start.* (start.from and start.csv name a file, "
+                                          "which may lie outside the folders ede-view serves). Fix: a scene file "
+                                          "under --scenes that starts from the state");
         setup.overrides.push_back(o.get<std::string>());
       }
     }
@@ -85,12 +99,12 @@ void add_live_routes(httplib::Server& server, const std::vector<Root>& roots, Li
   server.Get("/api/run/status", [&runs](const httplib::Request&, httplib::Response& res) {
     send_json(res, runs.status_json());
   });
-  server.Get("/api/run/frame", [&runs](const httplib::Request& req, httplib::Response& res) {
+  server.Get("/api/run/frame", [&runs, &budget](const httplib::Request& req, httplib::Response& res) {
     const auto request = frame_request_param(req, res, 200000);
     if (!request) return;
     auto frame = runs.frame(*request);
     if (!frame) return send_error(res, 404, "no run: press SETUP first");
-    send_frame(res, std::move(frame));
+    send_frame(res, std::move(frame), budget);
   });
 }
 

@@ -10,6 +10,7 @@
 
 namespace ede::view {
 
-void add_live_routes(httplib::Server& server, const std::vector<Root>& scene_roots, LiveRuns& runs);
+void add_live_routes(httplib::Server& server, const std::vector<Root>& scene_roots, LiveRuns& runs,
+                     FrameBudget& budget);
 
 }  // namespace ede::view

@@ -109,7 +109,7 @@ std::shared_ptr<OpenLog> find_log(const std::vector<Root>& roots, LogStore& stor
 
 }  // namespace
 
-void add_log_routes(httplib::Server& server, const std::vector<Root>& roots) {
+void add_log_routes(httplib::Server& server, const std::vector<Root>& roots, FrameBudget& budget) {
   auto store = std::make_shared<LogStore>();
   server.Get("/api/logs", [roots](const httplib::Request&, httplib::Response& res) {
     send_json(res, nlohmann::json{{"logs", list_files(roots, ".ede")}}.dump());
@@ -122,7 +122,7 @@ void add_log_routes(httplib::Server& server, const std::vector<Root>& roots) {
     json.pop_back();
     send_json(res, json + crater_info_field(crater_of(*entry)) + "}");
   });
-  server.Get("/api/log/frame", [roots, store](const httplib::Request& req, httplib::Response& res) {
+  server.Get("/api/log/frame", [roots, store, &budget](const httplib::Request& req, httplib::Response& res) {
     auto entry = find_log(roots, *store, req, res);
     if (!entry) return;
     const auto request = frame_request_param(req, res, kDefaultMaxDisks);
@@ -179,7 +179,7 @@ void add_log_routes(httplib::Server& server, const std::vector<Root>& roots) {
         extras.json_fields += crater_field(*entry->crater_before, s);
       }
     }
-    send_frame(res, std::make_shared<const std::string>(pack_frame(s, *entry->reference, extras, *request)));
+    send_frame(res, std::make_shared<const std::string>(pack_frame(s, *entry->reference, extras, *request)), budget);
   });
 }
 

@@ -10,6 +10,6 @@
 
 namespace ede::view {
 
-void add_log_routes(httplib::Server& server, const std::vector<Root>& log_roots);
+void add_log_routes(httplib::Server& server, const std::vector<Root>& log_roots, FrameBudget& budget);
 
 }  // namespace ede::view

@@ -52,9 +52,15 @@ int body(int argc, char** argv) {
   app.add_option("--host", opt.host, "the address to listen on (127.0.0.1: this machine only)")->capture_default_str();
   app.add_option("--port", opt.port, "the port (0: any free one; the address is printed)")->capture_default_str()->check(CLI::Range(0, 65535));
   app.add_option("--max-disks", opt.max_live_disks, "the most disks a live run may have")->capture_default_str();
+  std::uint64_t frame_mib = opt.frame_memory >> 20;
+  app.add_option("--frame-memory", frame_mib,
+                 "MiB of frames being sent at once; above it a page is told to ask again (503)")
+      ->capture_default_str()
+      ->check(CLI::Range(std::uint64_t(1), std::uint64_t(1) << 20));
   ede::tools::add_version_flags(app, "ede-view");
   if (auto status = ede::tools::parse_command_line(app, argc, argv)) return *status;
 
+  opt.frame_memory = frame_mib << 20;
   std::string error;
   for (const std::string& d : logs)
     if (!add_root(opt.log_roots, d, "--logs", error)) return fail(error);
@@ -76,6 +82,10 @@ int body(int argc, char** argv) {
   // mapping and unmapping it each time (every fresh page is a page fault; they cost more than the frame).
   mallopt(M_MMAP_THRESHOLD, 256 << 20);
   mallopt(M_TRIM_THRESHOLD, 512 << 20);
+  // One heap for every thread: glibc gives threads arenas of their own (up to 8 per core), each keeping the
+  // frames and states it freed, so 128 workers serving large frames grew the process by ~300 MB with ~30 MB
+  // in use (test_view_abuse.py); the threads mostly wait on sockets, so they hardly contend for it.
+  mallopt(M_ARENA_MAX, 1);
 
   // Block the signals in every thread (httplib's workers inherit the mask); one thread waits for them.
   sigset_t signals;

@@ -13,12 +13,25 @@
 namespace ede::view {
 
 constexpr std::size_t kMaxBody = 64 * 1024;
+// Connections are served one per worker thread (cpp-httplib blocks on each), so an idle keep-alive socket,
+// a request arriving byte by byte or a page that does not read its frame holds a worker until its timeout.
+// Many workers (idle threads cost a stack's address space, not memory) and short timeouts keep a page
+// answered while dozens of others do that (tests/tools/view/test_view_abuse.py). Rejected: httplib's
+// default of max(8, cores - 1) workers and 5 s timeouts, with which eight idle browser sockets made every
+// other page wait seconds.
+constexpr std::size_t kWorkers = 128;
+constexpr time_t kKeepAliveSeconds = 2;  // an idle connection is closed after this
+constexpr time_t kReadSeconds = 2;       // a request that stops arriving for this long is dropped
+constexpr time_t kWriteSeconds = 5;      // an answer the page stops reading for this long is dropped
 
 struct Server::Impl {
   ServerOptions options;
+  FrameBudget budget;  // before http: answers still in flight release into it
   httplib::Server http;
   LiveRuns runs;
-  explicit Impl(const ServerOptions& o) : options(o), runs(o.out_dir, o.max_live_disks) {}
+  explicit Impl(const ServerOptions& o) : options(o), runs(o.out_dir, o.max_live_disks) {
+    budget.limit = o.frame_memory;
+  }
 };
 
 namespace {
@@ -52,6 +65,10 @@ void add_assets(httplib::Server& http) {
 Server::Server(const ServerOptions& options) : impl_(std::make_unique<Impl>(options)) {
   httplib::Server& http = impl_->http;
   http.set_payload_max_length(kMaxBody);
+  http.new_task_queue = [] { return new httplib::ThreadPool(kWorkers); };
+  http.set_keep_alive_timeout(kKeepAliveSeconds);
+  http.set_read_timeout(kReadSeconds, 0);
+  http.set_write_timeout(kWriteSeconds, 0);
   http.set_tcp_nodelay(true);
   // SO_REUSEADDR only: httplib's default adds SO_REUSEPORT, with which a second server (or another local
   // program) could bind the same port and silently take half of the requests.
@@ -70,8 +87,8 @@ Server::Server(const ServerOptions& options) : impl_(std::make_unique<Impl>(opti
     return httplib::Server::HandlerResponse::Unhandled;
   });
   add_assets(http);
-  add_log_routes(http, options.log_roots);
-  add_live_routes(http, options.scene_roots, impl_->runs);
+  add_log_routes(http, options.log_roots, impl_->budget);
+  add_live_routes(http, options.scene_roots, impl_->runs, impl_->budget);
   // Statuses httplib sets itself (no route, 413 payload too large, 414 URI too long, 400 malformed)
   // get a JSON body too.
   http.set_error_handler([](const httplib::Request& req, httplib::Response& res) {

@@ -21,6 +21,7 @@ struct ServerOptions {
   std::vector<Root> log_roots, scene_roots;
   std::filesystem::path out_dir;
   std::uint64_t max_live_disks = 2000000;
+  std::uint64_t frame_memory = 256ull << 20;  // bytes of frames in flight (FrameBudget)
 };
 
 class Server {

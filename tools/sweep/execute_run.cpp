@@ -42,9 +42,12 @@ std::string why_no_result(const Sweep& s, const std::string& err_path) {
     if (!line.empty()) last = line;
   if (!last.empty()) return ": " + last.substr(0, 2000);
   struct statvfs fs {};
-  if (::statvfs(runs_dir(s).c_str(), &fs) == 0)
-    return " and wrote nothing on stderr; " + runs_dir(s) + " has " +
-           std::to_string((unsigned long long)fs.f_bavail * fs.f_frsize) + " bytes free now (a full disk?)";
+  if (::statvfs(runs_dir(s).c_str(), &fs) == 0) {
+    // Less than a log's first frame free: the disk is the likely cause; with room to spare it is not.
+    const unsigned long long free_bytes = (unsigned long long)fs.f_bavail * fs.f_frsize;
+    return " and wrote nothing on stderr; " + runs_dir(s) + " has " + std::to_string(free_bytes) + " bytes free now" +
+           (free_bytes < (1u << 20) ? " (the disk is full)" : "");
+  }
   return " and wrote nothing on stderr";
 }
 

@@ -93,7 +93,7 @@ struct EnergyCurve {
   bool default_spacing = false;                             // chosen by the rule above
   double mean_free_time = 0;                                // of the whole run
   double initial_energy = 0;                                // E(0)
-  double haff_tau = std::numeric_limits<double>::quiet_NaN();  // Haff's cooling time; NaN if elastic
+  double haff_tau = std::numeric_limits<double>::quiet_NaN();  // calibrated on C1 (a check); NaN if elastic
   double haff_calibration = 0;                              // C1: the collisions per disk omega0 came from
   // Haff's tau from Enskog's collision rate at t = 0 (ede/kinetic_theory.hpp), computed before looking at
   // the curve, with its stated uncertainty; NaN if elastic or not applicable (a mixture: see enskog_note).

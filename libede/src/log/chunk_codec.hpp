@@ -79,10 +79,18 @@ constexpr std::uint32_t kLatestColumnEncoding = 3;
 constexpr int kCountedKindsV2 = 6;
 constexpr int kLaterKindsV3 = 3;
 
-// The raw columns of one chunk, as the encoder fills them and the schema stores them.
+// Bytes of one column, where the encoder keeps them (valid until its next reset or add).
+struct ColumnView {
+  const unsigned char* data = nullptr;
+  std::size_t size = 0;
+};
+
+// The raw columns of one chunk, as the encoder filled them and the schema stores them: views into the
+// encoder's buffers, copied once, into the record's message (a copy into vectors first was ~4 % of the
+// worker's instructions).
 struct ChunkColumns {
-  std::vector<unsigned char> times, kinds, disks, partners, raw, residuals;  // raw: already shuffled
-  std::vector<unsigned char> spins;  // rough runs only
+  ColumnView times, kinds, disks, partners, raw, residuals;  // raw: already shuffled
+  ColumnView spins;  // rough runs only
 };
 
 // Codes events into columns. The predictions are made before (log/event_coder.hpp): the encoder only turns
@@ -127,9 +135,12 @@ class ChunkEncoder {
   T time_first() const { return time_first_; }
   T time_last() const { return time_last_; }
 
-  ChunkColumns columns() const {
-    return {times_.bytes(), kinds_.bytes(), disks_.bytes(), partners_.bytes(),
-            shuffle_bytes(raw_.bytes(), kScalarWidth<T>), residuals_.bytes(), spins_.bytes()};
+  // The columns as views into this encoder (the raw column shuffled into a buffer of its own: version 1).
+  ChunkColumns columns() {
+    raw_shuffled_ = shuffle_bytes(raw_.bytes(), kScalarWidth<T>);
+    const auto view = [](const ByteWriter& w) { return ColumnView{w.data(), w.size()}; };
+    return {view(times_), view(kinds_), view(disks_), view(partners_), {raw_shuffled_.data(), raw_shuffled_.size()},
+            view(residuals_), view(spins_)};
   }
 
  private:
@@ -281,6 +292,7 @@ class ChunkEncoder {
   u128 previous_key_ = 0;
   T time_first_{}, time_last_{};
   ByteWriter times_, kinds_, disks_, partners_, raw_, residuals_, spins_;
+  std::vector<unsigned char> raw_shuffled_;
 };
 
 // One decoded event, as tools list them.

@@ -39,7 +39,7 @@ class EventCoder {
   // building a CodedEvent.
   void add(const EventOutcome<T>& e, const Particles<T>& p, ChunkEvents<T>& out) {
     if (trust_ && !check_ && format_version_ >= 2 && e.v2_time_exact && e.v2_velocities_exact)
-      return out.push_plain({e.time, e.time, e.i, e.j, e.kind, e.tc_elastic, false});
+      return out.push_plain({e.time, e.i, e.j, e.kind, e.tc_elastic, false, false});
     out.push_back(code(e, p));
   }
 

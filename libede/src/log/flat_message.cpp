@@ -20,7 +20,8 @@ FlatMessage& FlatMessage::operator=(FlatMessage&& o) noexcept {
   if (this != &o) {
     release();
     base_ = o.base_, reserved_ = o.reserved_, mapped_ = o.mapped_, begin_ = o.begin_, size_ = o.size_;
-    o.base_ = nullptr, o.reserved_ = 0, o.mapped_ = false, o.begin_ = 0, o.size_ = 0;
+    dirty_ = o.dirty_;
+    o.base_ = nullptr, o.reserved_ = 0, o.mapped_ = false, o.begin_ = 0, o.size_ = 0, o.dirty_ = 0;
   }
   return *this;
 }
@@ -50,7 +51,7 @@ FlatMessage FlatMessage::copy_of(const void* data, std::size_t bytes) {
   m.base_ = std::malloc(std::max<std::size_t>(bytes, 1));
   if (!m.base_) throw std::bad_alloc();
   if (bytes) std::memcpy(m.base_, data, bytes);
-  m.reserved_ = m.size_ = bytes;
+  m.reserved_ = m.size_ = m.dirty_ = bytes;
   return m;
 }
 
@@ -71,14 +72,25 @@ void FlatMessage::release() {
     else
       std::free(base_);
   }
-  base_ = nullptr, reserved_ = 0, mapped_ = false, begin_ = size_ = 0;
+  base_ = nullptr, reserved_ = 0, mapped_ = false, begin_ = size_ = dirty_ = 0;
 }
 
 // MallocMessageBuilder's growth (GROW_HEURISTICALLY) at most doubles what was allocated, past the first
 // segment: four times the message plus the first segment and the table holds every segment it asks for.
-FlatMessageBuilder::FlatMessageBuilder(std::size_t words) {
+FlatMessageBuilder::FlatMessageBuilder(std::size_t words, FlatMessage* recycled) {
+  const std::size_t bytes = 8 * (kTableWords + 2048 + 4 * words);
+  if (recycled && recycled->reusable() && recycled->reserved() >= bytes) {
+    std::memset(recycled->base(), 0, recycled->dirty());
+    recycled->set_dirty(0);
+    buffer_ = std::move(*recycled);
+    return;
+  }
+  // A recycler's next message is usually about this one's size, sometimes a little larger: a quarter more
+  // room lets this block serve then too.
+  const std::size_t room = recycled ? bytes + bytes / 4 : bytes;
+  if (recycled) recycled->release();
   try {
-    buffer_ = FlatMessage::zeroed(8 * (kTableWords + 2048 + 4 * words));
+    buffer_ = FlatMessage::zeroed(room);
   } catch (const std::bad_alloc&) {  // address space refused: the message itself, later segments spilled
     buffer_ = FlatMessage::zeroed(8 * (kTableWords + 2048 + words));
   }
@@ -136,6 +148,7 @@ FlatMessage FlatMessageBuilder::finish() {
   // a mapping gives them back in set_view; a small block keeps them (freed with it).
   FlatMessage out = std::move(buffer_);
   out.set_view(begin * sizeof(capnp::word), (end - begin) * sizeof(capnp::word));
+  out.set_dirty(carved_ * sizeof(capnp::word));  // every word handed out may have been written
   return out;
 }
 

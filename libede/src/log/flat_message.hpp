@@ -52,18 +52,26 @@ class FlatMessage {
   // The content is [begin, begin + size) of the block; the rest of a mapping beyond it is given back.
   void set_view(std::size_t begin, std::size_t size);
   void release();
+  // A malloc'ed block can be zeroed again and reused for another message (FlatMessageBuilder's `recycled`):
+  // only its first `dirty()` bytes may be non-zero.
+  bool reusable() const { return base_ != nullptr && !mapped_; }
+  std::size_t dirty() const { return dirty_; }
+  void set_dirty(std::size_t bytes) { dirty_ = bytes; }
 
  private:
   void* base_ = nullptr;
   std::size_t reserved_ = 0;  // bytes of the block
   bool mapped_ = false;
   std::size_t begin_ = 0, size_ = 0;
+  std::size_t dirty_ = 0;  // bytes from the block's start that may have been written
 };
 
 class FlatMessageBuilder final : public capnp::MessageBuilder {
  public:
   // `words`: the expected size of the whole message in words (root pointer, structs, lists, data).
-  explicit FlatMessageBuilder(std::size_t words);
+  // `recycled` (a caller that reuses blocks): an earlier message's block, zeroed again and taken if it is
+  // large enough, else freed and a block with room to spare reserved instead.
+  explicit FlatMessageBuilder(std::size_t words, FlatMessage* recycled = nullptr);
   ~FlatMessageBuilder() override;
   FlatMessageBuilder(const FlatMessageBuilder&) = delete;
   FlatMessageBuilder& operator=(const FlatMessageBuilder&) = delete;

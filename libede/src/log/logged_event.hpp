@@ -6,7 +6,11 @@
 // (EventOutcome::v2_*_exact: an ordinary pair collision needs no prediction at all). What the worker gets is
 // then small: the time and its prediction, the ids and the kind (LoggedEvent, 32 bytes in double), and,
 // only for an event whose velocities were not vouched for, the velocities and their predictions in
-// `extra`. The worker turns these into residuals and varints, builds the record and compresses it.
+// `extra`; the time's prediction is kept apart (`predicted`) only where it differs from the time, so a
+// LoggedEvent is 24 bytes in double (32 with the prediction in it): less for the loop to write and the
+// worker to read when both share one core and its L2 with the engine's data (the loop hands them over in
+// batches: log_writer.cpp). The worker turns these into residuals and varints, builds the record and
+// compresses it.
 // Format version 1 (ede-replay convert, comparisons) keeps in `extra` what its coder reads: the velocities
 // after and before the event and the two masses.
 // Rejected: the worker keeping a replayed copy of the state to predict from (40 B/disk; its cache misses,
@@ -19,6 +23,7 @@
 #include <vector>
 
 #include "core/event.hpp"
+#include "log/scalar_bytes.hpp"
 
 namespace ede {
 
@@ -38,12 +43,20 @@ struct CodedEvent {
 
 template <class T>
 struct LoggedEvent {
-  T time, predicted_time;
+  T time;
   std::int32_t i, j;
   EventKind kind;
   bool tc_elastic;
-  bool extra;  // the velocities follow in ChunkEvents::extra
+  bool extra;      // the velocities follow in ChunkEvents::extra
+  bool predicted;  // the time's prediction differs from the time (bit for bit): it follows in ChunkEvents::predicted
 };
+static_assert(sizeof(LoggedEvent<double>) == 24);
+
+// Whether a prediction is the time itself, bit for bit (the time code's test: -0 and +0 differ there).
+template <class T>
+inline bool same_key(T a, T b) {
+  return ordered_key(a) == ordered_key(b);
+}
 
 // The events of one chunk, in order: each LoggedEvent, and for those with `extra` their values in `extra`
 // (version 2: v[4], pv[4], then w[2], pw[2] in rough runs; version 1: v[4], v0[4], mi, mj).
@@ -56,16 +69,18 @@ class ChunkEvents {
   std::size_t size() const { return events_.size(); }
   bool empty() const { return events_.empty(); }
   void reserve(std::size_t n) { events_.reserve(n); }
-  void clear() { events_.clear(), extra_.clear(); }
+  void clear() { events_.clear(), extra_.clear(), predicted_.clear(); }
   T time_first() const { return events_.front().time; }
   T time_last() const { return events_.back().time; }
 
-  // An event with nothing in `extra` (version 2, its velocities vouched for or predicted exactly).
+  // An event with nothing in `extra` and its time predicted exactly (version 2, vouched for entirely).
   void push_plain(const LoggedEvent<T>& e) { events_.push_back(e); }
 
   void push_back(const CodedEvent<T>& e) {
     const bool extra = v1_ || !e.velocities_predicted;
-    events_.push_back({e.time, e.predicted_time, e.i, e.j, e.kind, e.tc_elastic, extra});
+    const bool predicted = !v1_ && !same_key(e.time, e.predicted_time);  // version 1 codes no time prediction
+    events_.push_back({e.time, e.i, e.j, e.kind, e.tc_elastic, extra, predicted});
+    if (predicted) predicted_.push_back(e.predicted_time);
     if (!extra) return;
     extra_.insert(extra_.end(), e.v, e.v + 4);
     extra_.insert(extra_.end(), e.pv, e.pv + 4);
@@ -81,9 +96,11 @@ class ChunkEvents {
   template <class F>
   [[gnu::always_inline]] void for_each(F&& f) const {
     const T* x = extra_.data();
+    const T* predicted = predicted_.data();
     CodedEvent<T> e;
     for (const LoggedEvent<T>& l : events_) {
-      e.time = l.time, e.predicted_time = l.predicted_time, e.kind = l.kind, e.tc_elastic = l.tc_elastic;
+      e.time = l.time, e.kind = l.kind, e.tc_elastic = l.tc_elastic;
+      e.predicted_time = l.predicted ? *predicted++ : l.time;
       e.i = l.i, e.j = l.j;
       e.velocities_predicted = !l.extra;
       if (l.extra) {
@@ -102,6 +119,7 @@ class ChunkEvents {
  private:
   std::vector<LoggedEvent<T>> events_;
   std::vector<T> extra_;
+  std::vector<T> predicted_;  // the time predictions of the events with `predicted`, in order
   bool rough_ = false, v1_ = false;
 };
 

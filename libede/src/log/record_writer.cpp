@@ -83,14 +83,14 @@ RecordWriter::~RecordWriter() { finish(); }
 void RecordWriter::write_raw(std::vector<unsigned char> bytes) {
   std::unique_lock lock(mutex_);
   idle_.wait(lock, [&] { return queue_.size() < kMaxQueued; });
-  queue_.push_back(Job{true, {}, std::move(bytes), {}, {}});
+  queue_.push_back(Job{true, {}, std::move(bytes), {}, {}, {}});
   wake_.notify_one();
 }
 
 std::size_t RecordWriter::submit(logfmt::RecordHeader header, FlatMessage content) {
   std::unique_lock lock(mutex_);
   idle_.wait(lock, [&] { return queue_.size() < kMaxQueued; });
-  queue_.push_back(Job{false, header, {}, std::move(content), {}});
+  queue_.push_back(Job{false, header, {}, std::move(content), {}, {}});
   wake_.notify_one();
   return submitted_++;
 }
@@ -98,9 +98,18 @@ std::size_t RecordWriter::submit(logfmt::RecordHeader header, FlatMessage conten
 std::size_t RecordWriter::submit_built(logfmt::RecordHeader header, Builder build) {
   std::unique_lock lock(mutex_);
   idle_.wait(lock, [&] { return queue_.size() < kMaxQueued; });
-  queue_.push_back(Job{false, header, {}, {}, std::move(build)});
+  queue_.push_back(Job{false, header, {}, {}, std::move(build), {}});
   wake_.notify_one();
   return submitted_++;
+}
+
+void RecordWriter::submit_task(Task task) {
+  std::unique_lock lock(mutex_);
+  idle_.wait(lock, [&] { return queue_.size() < kMaxQueued; });
+  Job job{false, {}, {}, {}, {}};
+  job.task = std::move(task);
+  queue_.push_back(std::move(job));
+  wake_.notify_one();
 }
 
 void RecordWriter::flush() {
@@ -157,6 +166,7 @@ void RecordWriter::work() {
       busy_ = true;
     }
     const std::uint64_t at = offset_;
+    const bool record = !job.raw && !job.task;
     std::string problem;
     if (error_.empty()) try {
         problem = write_job(job);
@@ -166,7 +176,7 @@ void RecordWriter::work() {
       }
     {
       std::lock_guard lock(mutex_);
-      if (!job.raw) offsets_.push_back(at);
+      if (record) offsets_.push_back(at);
       if (!problem.empty() && error_.empty()) error_ = problem;
       busy_ = false;
     }
@@ -176,12 +186,18 @@ void RecordWriter::work() {
 
 // Runs on the worker: compress, frame, write. Touches offset_ and the zstd context only here.
 std::string RecordWriter::write_job(Job& job) {
+  if (job.task) {
+    job.task();
+    job.task = nullptr;
+    return {};
+  }
   if (job.raw) {
     const std::string e = write_all(fd_, job.bytes.data(), job.bytes.size());
     offset_ += job.bytes.size();
     return e.empty() ? e : "writing '" + path_ + "': " + e;
   }
-  if (job.build) {
+  const bool built = bool(job.build);
+  if (built) {
     job.content = job.build();
     job.build = nullptr;  // frees the chunk's events now
   }
@@ -191,13 +207,26 @@ std::string RecordWriter::write_job(Job& job) {
   if (bound > two_pass_above_) {
     if (std::string e = write_two_pass(job); !e.empty()) return e;
   } else {
-    const std::unique_ptr<unsigned char[]> out(new unsigned char[logfmt::kRecordHeaderSize + bound]);  // not zero-filled
-    const std::size_t n = ZSTD_compress2(cctx, out.get() + logfmt::kRecordHeaderSize, bound, job.content.data(), size);
-    job.content.release();  // freed before the write
+    // A chunk's output block is kept for the next (compressed_); a larger record's is its own, freed after.
+    const std::size_t need = logfmt::kRecordHeaderSize + bound;
+    std::unique_ptr<unsigned char[]> own;
+    if (need > kKeptOutput) {
+      own.reset(new unsigned char[need]);  // not zero-filled
+    } else if (compressed_size_ < need) {
+      compressed_.reset();
+      compressed_.reset(new unsigned char[kKeptOutput]);
+      compressed_size_ = kKeptOutput;
+    }
+    unsigned char* const out = own ? own.get() : compressed_.get();
+    const std::size_t n = ZSTD_compress2(cctx, out + logfmt::kRecordHeaderSize, bound, job.content.data(), size);
+    if (built && recycle_)
+      recycle_(std::move(job.content));
+    else
+      job.content.release();  // freed before the write
     if (ZSTD_isError(n)) return std::string("compressing a log record: ") + ZSTD_getErrorName(n);
     job.header.payload_size = n;
-    logfmt::encode_record_header(job.header, out.get());
-    const std::string e = write_all(fd_, out.get(), logfmt::kRecordHeaderSize + n);
+    logfmt::encode_record_header(job.header, out);
+    const std::string e = write_all(fd_, out, logfmt::kRecordHeaderSize + n);
     offset_ += logfmt::kRecordHeaderSize + n;
     if (!e.empty()) return "writing '" + path_ + "': " + e;
   }

@@ -29,6 +29,7 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -61,6 +62,14 @@ class RecordWriter {
   // was built (so a builder may keep state from one call to the next: it runs in submission order).
   using Builder = std::function<FlatMessage()>;
   std::size_t submit_built(logfmt::RecordHeader header, Builder build);
+  // Queues work for the worker that makes no record (no sequence number): it runs after everything
+  // submitted before it and before everything after (the log writer codes a chunk's events in batches).
+  using Task = std::function<void()>;
+  void submit_task(Task task);
+  // Called on the worker with the content of each built record once it is compressed, instead of freeing
+  // it (the chunk coder reuses its block). Set before the first submit_built.
+  using Recycler = std::function<void(FlatMessage&&)>;
+  void set_recycler(Recycler recycle) { recycle_ = std::move(recycle); }
   // Waits until everything submitted is on disk.
   void flush();
   // File offset of the record with this sequence number (after flush()).
@@ -78,6 +87,7 @@ class RecordWriter {
     std::vector<unsigned char> bytes;  // raw
     FlatMessage content;               // a record's
     Builder build;  // when set, makes `content` on the worker
+    Task task;      // when set, the whole job (no record)
   };
   void work();
   std::string write_job(Job& job);
@@ -97,6 +107,12 @@ class RecordWriter {
   std::size_t submitted_ = 0;
   std::string error_;
   void* zstd_context_ = nullptr;
+  Recycler recycle_;
+  // The compressed output of a record written in one piece, kept from one record to the next (a new block
+  // per chunk meant fresh pages, faulted in, for every chunk).
+  static constexpr std::size_t kKeptOutput = std::size_t(1) << 20;
+  std::unique_ptr<unsigned char[]> compressed_;
+  std::size_t compressed_size_ = 0;
 };
 
 }  // namespace ede

@@ -17,6 +17,14 @@
 #   abuse      a second sweep into a folder another one is writing is refused; the sweep killed mid-way
 #              leaves tables saying which runs are pending, and a rerun gives the reference tables; the
 #              sweep file edited while it runs: the later runs are "changed", a rerun runs them all again
+#   disk-full  the disk filling mid-sweep: (as root, where mount works) the results folder on a 80 KiB tmpfs
+#              fills after three runs: the sweep exits 1 naming the table it could not write and every run
+#              without a result ("the disk is full"), the tables on disk are the last complete ones (every
+#              run pending, none wrong); with room again a rerun reuses the three and gives the reference
+#              tables. Then (anyone; skipped under sanitizers) prlimit --fsize=16000 on the sweep and its
+#              runs, a stand-in for a full disk that EFBIG and SIGXFSZ give without root: the runs whose logs
+#              outgrow it are rows 'killed' naming signal 25 (File size limit exceeded), the others ok and
+#              right, no row twice; a rerun without the limit gives the reference tables
 #   collapse   a run that falls into inelastic collapse is a row with its status and the library's remedy,
 #              measured all the same; the other run finishes; a rerun keeps the row (the run's own outcome)
 set -u
@@ -209,6 +217,47 @@ abuse)
   "$SWEEP" long.sweep.toml --out-dir e -j 1 --no-timing >again 2>&1 || { cat again; fail "the rerun after the edit failed"; }
   cat again
   grep -q "3 runs: 3 ok (3 run now, 0 reused)" again || fail "the rerun after the edit reused a run of the old file"
+  ;;
+disk-full)
+  "$SWEEP" "$HERE/small.sweep.toml" --out-dir ref -j 1 --no-timing -q >/dev/null 2>&1 || fail "the reference sweep failed"
+  mkdir full
+  if [ "$(id -u)" = 0 ] && mount -t tmpfs -o size=80k tmpfs full 2>/dev/null; then
+    trap 'umount "$T/full" 2>/dev/null; rm -rf "$T"' EXIT
+    "$SWEEP" "$HERE/small.sweep.toml" --out-dir full/r -j 1 --no-timing -q >out 2>&1; status=$?
+    cat out full/r/runs.csv
+    [ $status = 1 ] || fail "a sweep on a full disk: exit status $status, expected 1"
+    grep -q "full/r/runs.csv: cannot write the table (No space left on device)" out ||
+      fail "the error should name the table it could not write and the system's reason"
+    [ "$(grep -c 'the disk is full' out)" -ge 1 ] || fail "the runs without a result should say the disk is full"
+    [ "$(grep -c '^[0-9]' full/r/runs.csv)" = 8 ] && [ "$(cut -d, -f1 full/r/runs.csv | sort | uniq -d | wc -l)" = 0 ] ||
+      fail "the table on disk should hold every run once"
+    while IFS= read -r row; do
+      case $row in *,ok,*) grep -qxF "$row" ref/runs.csv || fail "a row that is not the reference's: $row" ;; esac
+    done <full/r/runs.csv
+    mount -o remount,size=4m full || fail "could not make room on the tmpfs"
+    "$SWEEP" "$HERE/small.sweep.toml" --out-dir full/r -j 1 --no-timing -q >again 2>&1 || { cat again; fail "the rerun failed"; }
+    cat again
+    grep -q "8 runs: 8 ok (5 run now, 3 reused)" again || fail "the rerun should reuse the three finished runs"
+    cmp ref/runs.csv full/r/runs.csv && cmp ref/points.csv full/r/points.csv || fail "the rerun's tables differ from the reference"
+    umount full
+  else
+    echo "the tmpfs part needs root and mount (skipped); the file-size limit below stands in for it"
+  fi
+  if [ -n "${EDE_SANITIZED:-}" ]; then echo "skipped: the file-size limit under a sanitizer build"; exit 77; fi
+  # 16000 bytes: the logs of the points with speed 1 take ~15 KB, those with speed 4 ~23 KB.
+  prlimit --fsize=16000 "$SWEEP" "$HERE/small.sweep.toml" --out-dir p -j 1 --no-timing -q >out 2>&1; status=$?
+  cat out p/runs.csv
+  [ $status = 3 ] || fail "a sweep whose runs outgrow the file-size limit: exit status $status, expected 3"
+  grep -q "8 runs: 4 killed, 4 ok (8 run now, 0 reused)" out || fail "the closing line"
+  [ "$(grep -c ',killed,"the run.s process was killed by signal 25 (File size limit exceeded) without a result, 3 times' p/runs.csv)" = 4 ] ||
+    fail "the four runs with large logs should be 'killed' rows naming SIGXFSZ"
+  [ "$(cut -d, -f1 p/runs.csv | sort | uniq -d | wc -l)" = 0 ] || fail "a run appears twice"
+  for row in $(grep ',ok,' p/runs.csv | cut -d, -f1-12); do
+    grep -q "^$row" ref/runs.csv || fail "an ok row differs from the reference: $row"
+  done
+  "$SWEEP" "$HERE/small.sweep.toml" --out-dir p -j 1 --no-timing -q >again 2>&1 || { cat again; fail "the rerun failed"; }
+  grep -q "8 runs: 8 ok (4 run now, 4 reused)" again || fail "the rerun should reuse the four finished runs: $(cat again)"
+  cmp ref/runs.csv p/runs.csv && cmp ref/points.csv p/points.csv || fail "the rerun's tables differ from the reference"
   ;;
 collapse)
   "$SWEEP" "$HERE/collapse.sweep.toml" --out-dir c -j 2 -q >out 2>&1

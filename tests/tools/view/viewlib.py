@@ -66,13 +66,13 @@ def replay_at(log, t):
 class Server:
     """ede-view on a free port of 127.0.0.1, in a temporary folder (its --out-dir is there too)."""
 
-    def __init__(self, logs_dir=None, extra=()):
+    def __init__(self, logs_dir=None, extra=(), cwd=None):
         self.dir = tempfile.mkdtemp(prefix="ede-view-test-")
         self.logs = logs_dir or os.path.join(self.dir, "logs")
         os.makedirs(self.logs, exist_ok=True)
         cmd = [os.path.join(tools_dir(), "ede-view"), "--port", "0", "--logs", self.logs,
                "--scenes", os.path.join(source_dir(), "examples"), "--out-dir", os.path.join(self.dir, "runs"), *extra]
-        self.proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        self.proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=cwd)
         line = self.proc.stdout.readline()
         if "http://" not in line:
             raise RuntimeError("ede-view did not start: " + line + self.proc.stderr.read())

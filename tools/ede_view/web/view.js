@@ -30,7 +30,9 @@ async function api(path, options) {
   if (!res.ok) {
     let message = res.status + ' ' + res.statusText;
     try { message = (await res.json()).error; } catch (e) { /* not JSON */ }
-    throw new Error(message);
+    const error = new Error(message);
+    error.status = res.status;
+    throw error;
   }
   return res;
 }
@@ -347,7 +349,13 @@ function show(f, streaming) {
 }
 
 async function fetchFrame(path, streaming) {
-  const res = await api(path);
+  let res;
+  try {
+    res = await api(path);
+  } catch (e) {
+    if (e.status === 503) return;  // the server is busy sending frames to other pages: the next tick asks again
+    throw e;
+  }
   show(parseFrame(await res.arrayBuffer()), streaming);
 }
 
