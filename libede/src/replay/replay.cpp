@@ -321,7 +321,7 @@ template <class T>
 void Replay<T>::before_event(const DecodedEvent<T>& e, ReplayedEvent<T>& out) const {
   if (e.i < 0) return;
   out.vix0 = state_.vx_at(std::size_t(e.i), e.time), out.viy0 = state_.vy_at(std::size_t(e.i), e.time);
-  if (e.kind == EventKind::Pair)
+  if (e.kind == EventKind::Pair || e.kind == EventKind::Step)
     out.vjx0 = state_.vx_at(std::size_t(e.j), e.time), out.vjy0 = state_.vy_at(std::size_t(e.j), e.time);
   if (!state_.omega.empty()) {
     out.wi0 = state_.omega[std::size_t(e.i)];
@@ -347,7 +347,7 @@ void Replay<T>::after_event(const DecodedEvent<T>& e, ReplayedEvent<T>& out) con
     return;
   }
   out.xi = state_.x_at(std::size_t(e.i), e.time), out.yi = state_.y_at(std::size_t(e.i), e.time);
-  if (e.kind == EventKind::Pair)
+  if (e.kind == EventKind::Pair || e.kind == EventKind::Step)
     out.xj = state_.x_at(std::size_t(e.j), e.time), out.yj = state_.y_at(std::size_t(e.j), e.time);
 }
 
@@ -468,6 +468,8 @@ Result<StoredRebuildPoint<T>> Replay<T>::rebuild_point(std::size_t keyframe) con
   r.counts.tc_elastic = kf.counts[kCountedKindsV2 + 1];
   if (kf.counts.size() > std::size_t(kCountedKindsV2 + 2))
     r.counts.by_kind[int(EventKind::Segment)] = kf.counts[kCountedKindsV2 + 2];
+  if (kf.counts.size() > std::size_t(kCountedKindsV2 + 3))  // format version 3
+    r.counts.by_kind[int(EventKind::Step)] = kf.counts[kCountedKindsV2 + 3];
   r.next_sample_index = kf.next_sample;
   r.next_action_index = kf.next_action;
   r.same_time_events = kf.same_time_events;
