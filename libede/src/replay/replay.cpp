@@ -109,7 +109,9 @@ Result<KeyframeData<T>> read_keyframe(const LogReader& log, const LogRecordRef& 
         for (std::size_t i = 0; i < n; ++i) k.last_collision[i] = scalar_from_bytes<T>(raw.data() + i * kScalarWidth<T>);
       }
       for (const std::uint64_t c : kf.getEngineCounts()) k.counts.push_back(c);
-      if (k.counts.size() != std::size_t(kCountedKindsV2 + 2) && k.counts.size() != std::size_t(kCountedKindsV2 + 3))
+      const std::size_t counted = k.counts.size();  // version 3: 10 (segment and step events appended)
+      if (counted != std::size_t(kCountedKindsV2 + 2) && counted != std::size_t(kCountedKindsV2 + 3) &&
+          counted != std::size_t(kCountedKindsV2 + 4))
         return Error{where + ": the engine counters are malformed"};
       k.next_sample = kf.getNextSample();
       k.next_action = kf.getNextAction();
