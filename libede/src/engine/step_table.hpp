@@ -6,9 +6,11 @@
 // The depth is kept, not derived from positions at each prediction: right after a pair crosses a step its
 // distance equals the step's radius up to round-off, and a position test there could count the crossing
 // twice (the energy changed twice) or not at all. The depth is derived from positions only where no event
-// has just happened: at the start of a run and at a resumed run's rebuild point (init_depths; a pair
-// exactly on a step's radius counts as inside when approaching, which is what a crossing or a bounce
-// leaves). Storage: per disk a short list of (partner, depth), a few entries in a liquid; rejected: a hash
+// has just happened: at the start of a run and at a resumed run's rebuild point (init_depths). A rebuild
+// point follows an event, which may have been a step's: that pair sits on the step's radius up to
+// round-off, so a pair within 64 epsilon of a radius counts as inside when approaching (b < 0), which is
+// exactly what each of a crossing and a bounce, inwards or outwards, leaves; any other pair is that close
+// with a probability of ~1e-14 per rebuild. Storage: per disk a short list of (partner, depth), a few entries in a liquid; rejected: a hash
 // map of pairs (a hash and a probe per neighbour per prediction, and an iteration order to pin down).
 #pragma once
 
@@ -18,6 +20,7 @@
 #include <vector>
 
 #include "core/particles.hpp"
+#include "core/scalar_math.hpp"
 #include "ede/scene.hpp"
 
 namespace ede {
@@ -91,13 +94,14 @@ struct StepTable {
     return u;
   }
 
-  // How many of the pair's steps a distance squared d2 lies inside (on a radius: inside when approaching,
-  // b < 0, which is where a crossing or a bounce leaves a pair).
+  // How many of the pair's steps a distance squared d2 lies inside (on a radius, to round-off: inside when
+  // approaching, b < 0, which is where a crossing or a bounce leaves a pair).
   std::int32_t depth_at(Range r, T d2, T b) const {
     std::int32_t q = 0;
     for (std::uint32_t m = 0; m < r.count; ++m) {
       const T rr = radius[r.first + m] * radius[r.first + m];
-      if (d2 < rr || (d2 == rr && b < 0)) q = std::int32_t(m) + 1;
+      const T gap = d2 - rr, tolerance = T(64) * scalar_limits<T>::epsilon() * rr;
+      if (gap < -tolerance || (ede::abs(gap) <= tolerance && b < T(0))) q = std::int32_t(m) + 1;
     }
     return q;
   }
