@@ -197,16 +197,24 @@ class ChunkEncoder {
     u128 previous = previous_key_;
     events.for_each([&](const CodedEvent<T>& e) __attribute__((always_inline)) {
       *kinds++ = static_cast<unsigned char>(static_cast<unsigned char>(e.kind) | (e.tc_elastic ? kTcElasticFlag : 0));
-      if (pair_like(e.kind)) {
+      // A pair first and with one comparison, as before steps existed: steps (encoding 3) come last.
+      if (e.kind == EventKind::Pair) {
         disks = put_varint(disks, std::uint64_t(std::uint32_t(e.i)));
         const std::int64_t d = std::int64_t(e.j) - std::int64_t(e.i);
         partners = put_varint(partners, (std::uint64_t(d) << 1) ^ std::uint64_t(d >> 63));
       } else if (e.kind == EventKind::Wall || e.kind == EventKind::Wrap || e.kind == EventKind::Segment) {
         disks = put_varint(disks, std::uint64_t(std::uint32_t(e.i)));
         partners = put_varint(partners, std::uint64_t(std::uint32_t(e.j)));
+      } else if (e.kind == EventKind::Step) {
+        disks = put_varint(disks, std::uint64_t(std::uint32_t(e.i)));
+        const std::int64_t d = std::int64_t(e.j) - std::int64_t(e.i);
+        partners = put_varint(partners, (std::uint64_t(d) << 1) ^ std::uint64_t(d >> 63));
       }
       times = put_varint(times, time_code(e.time, e.predicted_time, previous));
-      const int velocities = pair_like(e.kind) ? 4 : e.kind == EventKind::Wall || e.kind == EventKind::Segment ? 2 : 0;
+      const int velocities = e.kind == EventKind::Pair                                   ? 4
+                             : e.kind == EventKind::Wall || e.kind == EventKind::Segment ? 2
+                             : e.kind == EventKind::Step                                 ? 4
+                                                                                         : 0;
       const int spun = !rough_ ? 0 : e.kind == EventKind::Pair ? 2 : e.kind == EventKind::Wall ? 1 : 0;
       if (e.velocities_predicted) {  // every residual 0: one byte each
         for (int k = 0; k < velocities; ++k) *residuals++ = 0;
