@@ -204,3 +204,30 @@ TEST_CASE("steps: the low-density pressure of square wells and shoulders follows
     CHECK(std::abs(mean - ref) < 4 * stderr_mean + 0.15 * std::abs(ref));
   }
 }
+
+TEST_CASE("steps: the speeds of a square-well gas in equilibrium follow Maxwell-Boltzmann", "[steps][physics]") {
+  // 2D MB at kT (m = 1): <v^4> / <v^2>^2 = 2 and half the speeds below sqrt(2 kT ln 2), kT = <v^2> / 2.
+  // 40 snapshots of 400 disks, 5000 events apart (~12 collisions per disk): tolerances of about 4
+  // standard errors of 16000 independent speeds (0.05 on the ratio, 0.016 on the fraction), wide enough
+  // for the snapshots' mild correlation.
+  InitialState s = lattice_gas(20, 0.01, 1.0, 17);
+  EngineOptions o;
+  o.boundary = BoundaryKind::Periodic;
+  o = with_steps(o, {0.03}, {-1.0});
+  auto e = engine(s, o);
+  e->run(300000);
+  std::vector<double> v2;
+  for (int snap = 0; snap < 40; ++snap) {
+    e->run(5000);
+    for (const Disk<double>& d : e->particles().disk) v2.push_back(d.vx * d.vx + d.vy * d.vy);
+  }
+  double m2 = 0, m4 = 0;
+  for (double x : v2) m2 += x / double(v2.size()), m4 += x * x / double(v2.size());
+  const double kt = m2 / 2;
+  std::size_t below = 0;
+  for (double x : v2) below += x < 2 * kt * std::log(2.0) ? 1 : 0;
+  INFO("kT " << kt << ", <v^4>/<v^2>^2 " << m4 / (m2 * m2) << ", fraction below the median " << double(below) / double(v2.size()));
+  CHECK(m4 / (m2 * m2) == Approx(2).margin(0.05));
+  CHECK(double(below) / double(v2.size()) == Approx(0.5).margin(0.016));
+  CHECK(kt > 0.5);  // the well's potential energy turned into kinetic: hotter than the start (kT = 1/2)
+}
