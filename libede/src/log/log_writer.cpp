@@ -475,6 +475,11 @@ Result<std::unique_ptr<LogWriter<T>>> LogWriter<T>::create(const std::string& pa
                                                            const LogSettings& settings,
                                                            const LogContinuation* continuation) {
   if (settings.chunk_events == 0) return Error{"log settings: chunk_events must be positive"};
+  if (run.steps && settings.format_version < 3) {
+    LogSettings v3 = settings;
+    v3.format_version = 3;
+    return create(path, run, v3, continuation);
+  }
   if (settings.format_version < logfmt::kOldestFormatVersion || settings.format_version > logfmt::kNewestFormatVersion)
     return Error{"log settings: format version " + std::to_string(settings.format_version) + " is not one this ede writes"};
   const std::uint64_t start = continuation ? continuation->cut_offset : 0;

@@ -25,7 +25,6 @@ Result<RunEngine<T>> start_run(RunPlan& plan, const RunLog& log, const Resumptio
   if (log.path.empty()) return run;
   if constexpr (kLogScalar<T>) {
     LogSettings settings = LogSettings::from(plan.scene.log);
-    if (plan.scene.physics.has_steps()) settings.format_version = 3;  // step events: FORMAT.md, version 3
     if (resume) settings.format_version = resume->format_version;  // a resumed log continues as written
     settings.check_exactness = log.check_exactness;
     auto w = LogWriter<T>::create(log.path, log_run_info(plan.scene, plan.options, plan.initial.species_names),
