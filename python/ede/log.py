@@ -8,7 +8,9 @@ from .state import State
 
 __all__ = ["Log", "open"]
 
-EVENT_KINDS = ("pair", "wall", "cell", "wrap", "action", "sample")
+# The event kinds' names by number, as the library lists them (ede/events.hpp): "pair", "wall", "cell",
+# "wrap", "action", "sample", "segment", "step".
+EVENT_KINDS = tuple(_ede.EVENT_KINDS)
 
 
 class Log:

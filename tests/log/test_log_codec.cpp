@@ -84,8 +84,11 @@ TEST_CASE("the file header refuses other files and other versions", "[log][codec
   h[8] = 1;  // format version 1: still read
   CHECK(logfmt::check_file_header(h, version).empty());
   CHECK(version == 1);
-  h[8] = 3;  // a newer version
-  CHECK(logfmt::check_file_header(h, version).find("version 3") != std::string::npos);
+  h[8] = 3;  // format version 3 (step events): read
+  CHECK(logfmt::check_file_header(h, version).empty());
+  CHECK(version == 3);
+  h[8] = 4;  // a newer version
+  CHECK(logfmt::check_file_header(h, version).find("version 4") != std::string::npos);
   h[8] = 0;
   CHECK(logfmt::check_file_header(h, version).find("version 0") != std::string::npos);
   std::memcpy(h, "seed = 1", 8);

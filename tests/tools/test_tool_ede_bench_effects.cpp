@@ -40,7 +40,7 @@ TEST_CASE("ede-bench effects: a row per effect, the engine it selects, the all-e
   CHECK(contains(r.out, "(10000 disks), 20000 events per run, 1 rounds"));
 
   const std::vector<std::string> rows = lines(read_file(csv));
-  REQUIRE(rows.size() == 13);
+  REQUIRE(rows.size() == 15);
   CHECK(rows[0].rfind("effects,engine,ns_per_event,cycles_per_event,ratio_to_elastic,all_effects_ns_per_event", 0) == 0);
   for (std::size_t k = 1; k < rows.size(); ++k) {
     // The figures after the two quoted fields: ns/event, cycles/event, ratio to elastic, all-effects ns/event.
@@ -53,6 +53,7 @@ TEST_CASE("ede-bench effects: a row per effect, the engine it selects, the all-e
   CHECK(contains(rows[1], "\"elastic (walls)\",\"walls, elastic, grid"));
   CHECK(contains(read_file(csv), "\"wall segments (a divider)\",\"walls, elastic, 2 segments, grid"));
   CHECK(contains(read_file(csv), "\"rough disks (beta = beta_w = 1)\",\"walls, elastic, rough (beta=1, beta_w=1"));
+  CHECK(contains(read_file(csv), "\"square well (lambda = 1.5, depth 0.5)\",\"walls, elastic, stepped potential (1 step)"));
 }
 
 TEST_CASE("ede-bench-elastic: holds the elastic engine alone and refuses other scenes", "[tool][ede-bench]") {
@@ -75,5 +76,5 @@ TEST_CASE("ede-bench-elastic: holds the elastic engine alone and refuses other s
   REQUIRE(std::system(command.c_str()) == 0);
   const std::vector<std::string> engines = lines(read_file(symbols));
   CHECK(engines == std::vector<std::string>{"ede::Engine<double, ede::WallsBoundary, ede::Elastic, ede::NoField, "
-                                            "ede::StableContact, ede::NoSegments, ede::Smooth>"});
+                                            "ede::StableContact, ede::NoSegments, ede::Smooth, ede::HardCore>"});
 }

@@ -25,6 +25,8 @@ using Time = long double;
 //   Action   a scheduled action (reverse every velocity)
 //   Sample   an observer's sampling time: no state change, not logged
 //   Segment  a disk hits a wall segment (its body or an end point); Event::j is the segment's index
+//   Step     two disks reach a step of their stepped potential (a square well or shoulder, outside the
+//            hard core): they cross it, trading kinetic for potential energy, or bounce off it
 #define EDE_EVENT_KINDS(X) \
   X(Pair, 0, "pair")       \
   X(Wall, 1, "wall")       \
@@ -32,7 +34,8 @@ using Time = long double;
   X(Wrap, 3, "wrap")       \
   X(Action, 4, "action")   \
   X(Sample, 5, "sample")   \
-  X(Segment, 6, "segment")
+  X(Segment, 6, "segment") \
+  X(Step, 7, "step")
 
 #define EDE_EVENT_KIND_ENUM(name, value, text) name = value,
 enum class EventKind : std::uint8_t { EDE_EVENT_KINDS(EDE_EVENT_KIND_ENUM) };
@@ -56,7 +59,7 @@ struct EventCounts {
   // Processed events: everything but samples and stale predictions (what stop.events counts).
   std::uint64_t events() const {
     return of(EventKind::Pair) + of(EventKind::Wall) + of(EventKind::Cell) + of(EventKind::Wrap) +
-           of(EventKind::Action) + of(EventKind::Segment);
+           of(EventKind::Action) + of(EventKind::Segment) + of(EventKind::Step);
   }
 };
 
@@ -87,7 +90,7 @@ struct Event {
   Time time = 0;
   EventKind kind = EventKind::Pair;
   std::int32_t i = -1;  // the disk (pair: the lower id); -1 for an action
-  std::int32_t j = -1;  // pair: the other disk; wall: WallId; wrap: WrapDir; segment: its index; action: -1
+  std::int32_t j = -1;  // pair, step: the other disk; wall: WallId; wrap: WrapDir; segment: its index; action: -1
   // Positions of i and j at the event (a wrap: i's position after it moved by one box length).
   Time xi = 0, yi = 0, xj = 0, yj = 0;
   // Velocities just before and just after the event (pair: both disks; wall, segment: i; wrap: i's, unchanged).

@@ -9,8 +9,13 @@
 //   WallsSegments        walls     Dissipative  NoField         every scene with wall segments (WithSegments)
 //   PeriodicRough        periodic  Dissipative  NoField         rough or spinning disks (Rough), periodic box
 //   WallsRough           walls     Dissipative  NoField         rough or spinning disks (Rough), walled box
+//   PeriodicSteps        periodic  Dissipative  NoField         a stepped potential (Stepped), periodic box
+//   WallsSteps           walls     Dissipative  NoField         a stepped potential (Stepped), walled box
+//   WallsGravitySteps    walls     Dissipative  UniformGravity  a stepped potential under gravity
 //
-// Eight per scalar type: make_engine_as<T> below names them all, and engine_float.cpp, engine_double.cpp,
+// The three stepped ones carry the step table and the step room (square wells and shoulders); no other
+// scene's engine has them compiled in.
+// Eleven per scalar type (eight before the stepped potential): make_engine_as<T> below names them all, and engine_float.cpp, engine_double.cpp,
 // engine_long_double.cpp (and engine_float128.cpp where EDE_HAVE_FLOAT128) instantiate it once each, so
 // 32 engines (24 without __float128). The two rough ones carry omega and the tangential impulse; every
 // other scene's engine has neither compiled in. Why not fewer: the elastic gas is what the speed targets are about,
@@ -73,6 +78,20 @@ Result<std::unique_ptr<EngineApi<T>>> make_engine_as(EngineKind kind, const Init
       break;
     case EngineKind::WallsRough:
       e = std::make_unique<Engine<T, WallsBoundary, Dissipative, NoField, StableContact, NoSegments, Rough>>(
+          init, o, shape, resume);
+      break;
+    case EngineKind::PeriodicSteps:
+      e = std::make_unique<
+          Engine<T, PeriodicBoundary, Dissipative, NoField, StableContact, NoSegments, Smooth, Stepped>>(
+          init, o, shape, resume);
+      break;
+    case EngineKind::WallsSteps:
+      e = std::make_unique<Engine<T, WallsBoundary, Dissipative, NoField, StableContact, NoSegments, Smooth, Stepped>>(
+          init, o, shape, resume);
+      break;
+    case EngineKind::WallsGravitySteps:
+      e = std::make_unique<
+          Engine<T, WallsBoundary, Dissipative, UniformGravity, StableContact, NoSegments, Smooth, Stepped>>(
           init, o, shape, resume);
       break;
   }

@@ -56,12 +56,19 @@ const char* to_string(EngineKind k) {
     case EngineKind::WallsSegments: return "walls, segments";
     case EngineKind::PeriodicRough: return "periodic, rough";
     case EngineKind::WallsRough: return "walls, rough";
+    case EngineKind::PeriodicSteps: return "periodic, stepped";
+    case EngineKind::WallsSteps: return "walls, stepped";
+    case EngineKind::WallsGravitySteps: return "walls, gravity, stepped";
   }
   return "?";
 }
 
 EngineKind engine_kind_for(const EngineOptions& o) {
   const bool elastic = o.physics.elastic();
+  if (o.physics.has_steps()) {
+    if (o.boundary == BoundaryKind::Periodic) return EngineKind::PeriodicSteps;
+    return o.physics.has_gravity() ? EngineKind::WallsGravitySteps : EngineKind::WallsSteps;
+  }
   if (uses_rotation(o)) return o.boundary == BoundaryKind::Periodic ? EngineKind::PeriodicRough : EngineKind::WallsRough;
   if (!o.physics.segments.empty()) return EngineKind::WallsSegments;
   if (o.boundary == BoundaryKind::Periodic) return elastic ? EngineKind::PeriodicElastic : EngineKind::PeriodicDissipative;
@@ -73,6 +80,12 @@ bool engine_can_run(EngineKind k, const EngineOptions& o) {
   const bool periodic = o.boundary == BoundaryKind::Periodic, gravity = o.physics.has_gravity();
   const bool elastic = o.physics.elastic(), segments = !o.physics.segments.empty();
   const bool rough = uses_rotation(o);
+  // Hard disks only in the engines without steps, and a stepped potential only in the stepped ones (a
+  // stepped engine without steps would run a hard-disk scene, but nothing compares them: not offered).
+  const bool steps = o.physics.has_steps();
+  const bool stepped_kind =
+      k == EngineKind::PeriodicSteps || k == EngineKind::WallsSteps || k == EngineKind::WallsGravitySteps;
+  if (steps != stepped_kind) return false;
   switch (k) {
     case EngineKind::PeriodicElastic: return periodic && !gravity && elastic && !segments && !rough;
     case EngineKind::PeriodicDissipative: return periodic && !gravity && !segments && !rough;
@@ -84,6 +97,9 @@ bool engine_can_run(EngineKind k, const EngineOptions& o) {
     // part), which is what ede-bench effects and the bit-for-bit test compare.
     case EngineKind::PeriodicRough: return periodic && !gravity && !segments;
     case EngineKind::WallsRough: return !periodic && !gravity && !segments;
+    case EngineKind::PeriodicSteps: return periodic && !gravity && !segments && !rough;
+    case EngineKind::WallsSteps: return !periodic && !gravity && !segments && !rough;
+    case EngineKind::WallsGravitySteps: return !periodic && !segments && !rough;
   }
   return false;
 }

@@ -58,9 +58,9 @@ void encode_file_header(unsigned char out[kFileHeaderSize], std::uint32_t versio
 std::string check_file_header(const unsigned char in[kFileHeaderSize], std::uint32_t& version) {
   if (std::memcmp(in, kFileMagic.data(), 8) != 0) return "not an ede event log (wrong magic number)";
   version = get_u32(in + 8);
-  if (version < kOldestFormatVersion || version > kFormatVersion)
+  if (version < kOldestFormatVersion || version > kNewestFormatVersion)
     return "log format version " + std::to_string(version) + ", but this ede reads versions " +
-           std::to_string(kOldestFormatVersion) + " to " + std::to_string(kFormatVersion) +
+           std::to_string(kOldestFormatVersion) + " to " + std::to_string(kNewestFormatVersion) +
            "; use the ede version that wrote it (or a newer one)";
   return {};
 }

@@ -14,6 +14,7 @@
 namespace ede::logfmt {
 
 constexpr std::uint32_t kFormatVersion = 2;       // what the writer writes by default
+constexpr std::uint32_t kNewestFormatVersion = 3;  // the newest a reader reads: 2 plus step events
 constexpr std::uint32_t kOldestFormatVersion = 1;  // the oldest a reader reads
 // Like PNG's: a non-ASCII first byte, and CR LF / SUB / LF to catch text-mode transfers.
 constexpr std::array<unsigned char, 8> kFileMagic = {0x89, 'E', 'D', 'E', '\r', '\n', 0x1A, '\n'};

@@ -21,7 +21,8 @@ bool loggable(unsigned char kind) {
     case EventKind::Wall:
     case EventKind::Wrap:
     case EventKind::Action:
-    case EventKind::Segment: return true;
+    case EventKind::Segment:
+    case EventKind::Step: return true;
     default: return false;
   }
 }

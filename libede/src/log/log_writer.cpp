@@ -459,7 +459,7 @@ struct LogWriter<T>::Impl {
     if (rebuild) {
       words += message_words_of(4 * n);
       if (!rebuild->particles.last_collision.empty()) words += column;
-      words += kCountedKindsV2 + 3;
+      words += kCountedKindsV2 + 3 + (settings.format_version >= 3 ? 1 : 0);
     }
     return words;
   }
@@ -472,13 +472,16 @@ struct LogWriter<T>::Impl {
       set_scalar_column<T>(k.initLastCollision(std::uint32_t(p.size() * kScalarWidth<T>)), p.size(),
                            [&](std::size_t i) { return p.last_collision[i]; });
     // The six kinds before segments, stale, tc_elastic; then segment events only in runs with segments
-    // (FORMAT.md), so the keyframes of every other run keep their bytes.
-    const bool segments = !run.segments.empty();
-    auto counts = k.initEngineCounts(kCountedKindsV2 + 2 + (segments ? 1 : 0));
+    // (FORMAT.md), so the keyframes of every other run keep their bytes; format version 3: segment and
+    // step events, always.
+    const bool v3 = settings.format_version >= 3;
+    const bool segments = !run.segments.empty() || v3;
+    auto counts = k.initEngineCounts(kCountedKindsV2 + 2 + (segments ? 1 : 0) + (v3 ? 1 : 0));
     for (int c = 0; c < kCountedKindsV2; ++c) counts.set(std::uint32_t(c), r.counts.by_kind[c]);
     counts.set(kCountedKindsV2, r.counts.stale);
     counts.set(kCountedKindsV2 + 1, r.counts.tc_elastic);
     if (segments) counts.set(kCountedKindsV2 + 2, r.counts.of(EventKind::Segment));
+    if (v3) counts.set(kCountedKindsV2 + 3, r.counts.of(EventKind::Step));
     k.setNextSample(r.next_sample_index);
     k.setNextAction(r.next_action_index);
     k.setSameTimeEvents(r.same_time_events);
@@ -529,7 +532,12 @@ Result<std::unique_ptr<LogWriter<T>>> LogWriter<T>::create(const std::string& pa
                                                            const LogSettings& settings,
                                                            const LogContinuation* continuation) {
   if (settings.chunk_events == 0) return Error{"log settings: chunk_events must be positive"};
-  if (settings.format_version < logfmt::kOldestFormatVersion || settings.format_version > logfmt::kFormatVersion)
+  if (run.steps && settings.format_version < 3) {
+    LogSettings v3 = settings;
+    v3.format_version = 3;
+    return create(path, run, v3, continuation);
+  }
+  if (settings.format_version < logfmt::kOldestFormatVersion || settings.format_version > logfmt::kNewestFormatVersion)
     return Error{"log settings: format version " + std::to_string(settings.format_version) + " is not one this ede writes"};
   const std::uint64_t start = continuation ? continuation->cut_offset : 0;
   auto impl = std::make_unique<Impl>(path, run, settings, start, settings.compression_level);

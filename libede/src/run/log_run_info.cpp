@@ -20,6 +20,7 @@ LogRunInfo log_run_info(const Scene& scene, const EngineOptions& options, const 
   r.gy = options.physics.gravity[1];
   r.set_restitution(options.physics);
   r.rotation = uses_rotation(options);
+  r.steps = options.physics.has_steps();
   r.engine_constants = true;
   return r;
 }
