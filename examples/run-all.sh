@@ -97,4 +97,14 @@ PYTHONPATH="$build/python${PYTHONPATH:+:$PYTHONPATH}" "$py" "$root/examples/roug
 section "heat capacity (c = k smooth, 3k/2 rough) and the ideal-gas law (examples/rough/*.toml)"
 PYTHONPATH="$build/python${PYTHONPATH:+:$PYTHONPATH}" "$py" "$root/examples/rough/heat_capacity.py" --out-dir "$out"
 
+section "square wells: a crystal below the critical temperature holds together, started hot it evaporates (examples/square-well.toml)"
+sim "$root/examples/square-well.toml" --set stop.time=15 -o "$logs/square-well.ede"
+sim "$root/examples/square-well.toml" --set stop.time=15 --set 'species[0].velocity.temperature=4.0' \
+  -o "$logs/square-well-hot.ede"
+for run in square-well square-well-hot; do
+  "$tools/ede-stats" energy "$logs/$run.ede" | grep -E '^ *(kinetic|potential|total)'
+  "$tools/ede-render" "$logs/$run.ede" --at end --color speed -o "$out/$run.png"
+done
+"$tools/ede-stats" gr "$logs/square-well.ede" --from 10 --plot "$out/square-well-gr.png" | grep -E '^(g\(r\)|peak|contact)' || true
+
 printf '\nall figures in %s (%s s)\n' "$out" "$(( $(date +%s) - start ))"

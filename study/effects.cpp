@@ -48,6 +48,11 @@ std::vector<EffectConfig> effect_configs() {
       // rows above are what they cost; the all-effects engine has no rotation, so that column stays empty.
       {"rough disks (beta = beta_w = 1)", {"physics.roughness=1", "physics.wall_roughness=1"}, false},
       {"rough disks (beta = 0.5, xi = 0.98)", {inelastic_pairs, "physics.roughness=0.5"}, false},
+      // A stepped potential (square wells and shoulders, sigma = 0.0071364, lambda = 1.5): the stepped
+      // engine's cost per event on the same gas; its step events are events too, and more of them per unit
+      // of time. Hard-disk scenes never run it (engine_factory.hpp), so the rows above are what they cost.
+      {"square well (lambda = 1.5, depth 0.5)", {"physics.steps=[{radius=[0.0107046],energy=[-0.5]}]"}, false},
+      {"square shoulder (lambda = 1.5, 0.5)", {"physics.steps=[{radius=[0.0107046],energy=[0.5]}]"}, false},
       // The Andersen thermostat (one global clock, a redraw now and then): the thermostat engine's cost on
       // the same gas, redrawing rarely (0.01 per disk per unit time) and often (1). Scenes without it never
       // run that engine; the all-effects engine has none, so that column stays empty.

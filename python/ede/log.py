@@ -8,8 +8,9 @@ from .state import State
 
 __all__ = ["Log", "open"]
 
-# By the number a log stores (ede/events.hpp); 7 is the square wells' step events (issue 38).
-EVENT_KINDS = ("pair", "wall", "cell", "wrap", "action", "sample", "segment", "step", "thermostat")
+# The event kinds' names by number, as the library lists them (ede/events.hpp): "pair", "wall", "cell",
+# "wrap", "action", "sample", "segment", "step", "thermostat".
+EVENT_KINDS = tuple(_ede.EVENT_KINDS)
 
 
 class Log:

@@ -108,7 +108,7 @@ Event event_at(const unsigned char* rows, const EventRowLayout& l, std::size_t k
   return e;
 }
 
-// The derived columns of n rows: the impulse on disk i, m_i (v_i' - v_i), for pair, wall and segment
+// The derived columns of n rows: the impulse on disk i, m_i (v_i' - v_i), for pair, wall, segment and step
 // events (0 for the others), and the collision's statistics (collision_record).
 // False if Ctrl-C stopped it (asked every 2^16 rows).
 template <class T>
@@ -123,7 +123,8 @@ bool derive(unsigned char* rows, std::size_t n, const RowPlan& p, const std::vec
       const auto kind = static_cast<EventKind>(get<std::uint8_t>(rows, w, k, l.kind));
       const std::int32_t i = get<std::int32_t>(rows, w, k, l.i);
       T px(0), py(0);
-      if ((kind == EventKind::Pair || kind == EventKind::Wall || kind == EventKind::Segment) && i >= 0) {
+      if ((kind == EventKind::Pair || kind == EventKind::Wall || kind == EventKind::Segment || kind == EventKind::Step) &&
+          i >= 0) {
         const T m = mass[std::size_t(i)];
         px = m * (get<T>(rows, w, k, l.vix) - get<T>(rows, w, k, l.vix_before));
         py = m * (get<T>(rows, w, k, l.viy) - get<T>(rows, w, k, l.viy_before));

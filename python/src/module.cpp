@@ -11,6 +11,10 @@
 PYBIND11_MODULE(_ede, m) {
   m.doc() = "ede's C++ library (use the package `ede`, not this module)";
   m.attr("__version__") = std::string(EDE_PYTHON_BUILT_FOR);
+  // The event kinds' names by number, from the one list in ede/events.hpp (Log.events' kind column).
+  pybind11::list kinds;
+  for (int k = 0; k < ede::kEventKindCount; ++k) kinds.append(ede::to_string(static_cast<ede::EventKind>(k)));
+  m.attr("EVENT_KINDS") = pybind11::tuple(kinds);
   ede::python::bind_errors(m);
   ede::python::bind_log(m);
   ede::python::bind_events(m);

@@ -247,6 +247,7 @@ class Reader {
   }
 
   T predict_time(int kind, std::int32_t i, std::int32_t j) const {
+    if (kind == 7 || kind == 8) return never();  // a step, a redraw (version 3): no prediction
     if (kind == 6) return segment_time(disk_[std::size_t(i)], seg_[std::size_t(j)]);
     if (kind == 1) {
       const Record<T>& d = disk_[std::size_t(i)];
@@ -319,10 +320,10 @@ class Reader {
       const int kind = version_ >= 2 ? (byte & ~16) : byte;
       const bool tc = version_ >= 2 && (byte & 16);
       std::int32_t i = -1, j = -1;
-      if (kind == 0 || kind == 1 || kind == 3 || kind == 6) {
+      if (kind == 0 || kind == 1 || kind == 3 || kind == 6 || kind == 7) {
         i = std::int32_t(disks.varint());
         const U128 p = partners.varint();
-        j = kind == 0 ? std::int32_t(i + unzig(p)) : std::int32_t(p);
+        j = kind == 0 || kind == 7 ? std::int32_t(i + unzig(p)) : std::int32_t(p);
       } else if (kind == 8) {  // version 3, thermostat: a disk, no partner
         i = std::int32_t(disks.varint());
       }
@@ -372,6 +373,13 @@ class Reader {
           if (rough_) a.w = read_residual(spins, wa), b.w = read_residual(spins, wb);
         }
         a.vx = v[0], a.vy = v[1], b.vx = v[2], b.vy = v[3];
+      } else if (kind == 7) {  // version 3, a step: both velocities against those before the event
+        Record<T>& a = disk_[std::size_t(i)];
+        Record<T>& b = disk_[std::size_t(j)];
+        bring(a, t);
+        bring(b, t);
+        a.vx = read_residual(residuals, a.vx), a.vy = read_residual(residuals, a.vy);
+        b.vx = read_residual(residuals, b.vx), b.vy = read_residual(residuals, b.vy);
       } else if (kind == 1) {
         Record<T>& a = disk_[std::size_t(i)];
         bring(a, t);

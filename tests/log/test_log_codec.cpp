@@ -84,7 +84,7 @@ TEST_CASE("the file header refuses other files and other versions", "[log][codec
   h[8] = 1;  // format version 1: still read
   CHECK(logfmt::check_file_header(h, version).empty());
   CHECK(version == 1);
-  h[8] = 3;  // version 3 (thermostat events): read
+  h[8] = 3;  // format version 3 (step and thermostat events): read
   CHECK(logfmt::check_file_header(h, version).empty());
   CHECK(version == 3);
   h[8] = 4;  // a newer version

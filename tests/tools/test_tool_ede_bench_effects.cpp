@@ -54,6 +54,7 @@ TEST_CASE("ede-bench effects: a row per effect, the engine it selects, the all-e
   CHECK(contains(rows[1], "\"elastic (walls)\",\"walls, elastic, grid"));
   CHECK(contains(read_file(csv), "\"wall segments (a divider)\",\"walls, elastic, 2 segments, grid"));
   CHECK(contains(read_file(csv), "\"rough disks (beta = beta_w = 1)\",\"walls, elastic, rough (beta=1, beta_w=1"));
+  CHECK(contains(read_file(csv), "\"square well (lambda = 1.5, depth 0.5)\",\"walls, elastic, stepped potential (1 step)"));
 }
 
 TEST_CASE("ede-bench-elastic: holds the elastic engine alone and refuses other scenes", "[tool][ede-bench]") {
@@ -76,5 +77,6 @@ TEST_CASE("ede-bench-elastic: holds the elastic engine alone and refuses other s
   REQUIRE(std::system(command.c_str()) == 0);
   const std::vector<std::string> engines = lines(read_file(symbols));
   CHECK(engines == std::vector<std::string>{"ede::Engine<double, ede::WallsBoundary, ede::Elastic, ede::NoField, "
-                                            "ede::StableContact, ede::NoSegments, ede::Smooth, ede::NoThermostat>"});
+                                            "ede::StableContact, ede::NoSegments, ede::Smooth, ede::HardCore, "
+                                            "ede::NoThermostat>"});
 }

@@ -36,10 +36,11 @@ struct EventsOptions {
 
 bool has_disk(EventKind k) {
   return k == EventKind::Pair || k == EventKind::Wall || k == EventKind::Wrap || k == EventKind::Segment ||
-         k == EventKind::Thermostat;
+         k == EventKind::Step || k == EventKind::Thermostat;
 }
 bool has_vi(EventKind k) {
-  return k == EventKind::Pair || k == EventKind::Wall || k == EventKind::Segment || k == EventKind::Thermostat;
+  return k == EventKind::Pair || k == EventKind::Wall || k == EventKind::Segment || k == EventKind::Step ||
+         k == EventKind::Thermostat;
 }
 
 // One row; the columns an event kind does not have are left empty.
@@ -55,7 +56,7 @@ std::string row(const Log& log, const Event& e, const CollisionDisks* disks, boo
   const bool full = disks != nullptr;
   const auto x = [&](Time v) { return exact(log, v); };
   const auto two = [](const std::string& a, const std::string& b) { return a + "," + b; };
-  const bool pair = e.kind == EventKind::Pair;
+  const bool pair = e.kind == EventKind::Pair || e.kind == EventKind::Step;  // both disks' columns
   std::string s = std::to_string(e.index) + "," + x(e.time) + "," + to_string(e.kind) + "," +
                   (has_disk(e.kind) ? two(std::to_string(e.i), std::to_string(e.j)) : ",") + "," +
                   (has_vi(e.kind) ? two(x(e.vix), x(e.viy)) : ",") + "," + (pair ? two(x(e.vjx), x(e.vjy)) : ",");

@@ -64,6 +64,9 @@ std::string csv_of(const std::vector<Run>& runs) {
   const std::vector<std::string> names = species_union(runs);
   std::string text = "label,restitution,time,kinetic_energy,energy_ratio,mean_kinetic_energy,haff_ratio";
   for (const std::string& n : names) text += ",mean_kinetic_energy:" + n;
+  // Logs of a stepped potential (format version 3) add the potential and the total energy.
+  const bool stepped = std::any_of(runs.begin(), runs.end(), [](const Run& r) { return !r.curve.series.potential_energy.empty(); });
+  if (stepped) text += ",potential_energy,total_energy";
   text += "\n";
   for (const Run& r : runs) {
     const LogSeries& s = r.curve.series;
@@ -77,6 +80,10 @@ std::string csv_of(const std::vector<Run>& runs) {
                            ? ""
                            : exact_double(s.species_mean_energy(std::size_t(it - s.species_names.begin()), k)));
       }
+      if (stepped)
+        text += s.potential_energy.empty() ? std::string(",,")
+                                           : "," + exact_double(s.potential_energy[k]) + "," +
+                                                 exact_double(s.kinetic_energy[k] + s.potential_energy[k]);
       text += "\n";
     }
   }
@@ -96,7 +103,18 @@ void report(const Run& r) {
   for (std::size_t sp = 0; sp < s.species_names.size() && s.species_names.size() > 1; ++sp)
     std::printf("  %-15s <E> from %s to %s\n", s.species_names[sp].c_str(), brief(s.species_mean_energy(sp, 0)).c_str(),
                 brief(s.species_mean_energy(sp, last)).c_str());
-  if (c.restitution == 1) std::printf("  conservation    max |E(t)/E(0) - 1| = %s\n", brief(c.max_drift()).c_str());
+  if (!s.potential_energy.empty()) {
+    double total0 = s.kinetic_energy.front() + s.potential_energy.front(), drift = 0;
+    for (std::size_t k = 0; k < s.time.size(); ++k)
+      drift = std::max(drift, std::abs(s.kinetic_energy[k] + s.potential_energy[k] - total0));
+    std::printf("  potential       U(0) = %s, U(end) = %s (a stepped potential)\n", brief(s.potential_energy.front()).c_str(),
+                brief(s.potential_energy.back()).c_str());
+    std::printf("  total           E + U = %s at the start, %s at the end; max |E + U - (E + U)(0)| = %s\n",
+                brief(total0).c_str(), brief(s.kinetic_energy.back() + s.potential_energy.back()).c_str(),
+                brief(drift).c_str());
+  } else if (c.restitution == 1) {
+    std::printf("  conservation    max |E(t)/E(0) - 1| = %s\n", brief(c.max_drift()).c_str());
+  }
   if (std::isfinite(c.enskog_tau))
     std::printf("  Haff's law      tau = %s +- %s from Enskog's rate at t = 0 (omega_E = %s per disk, not fitted); "
                 "at the end E/E(0) = %s against (1 + t/tau)^-2 = %s\n",

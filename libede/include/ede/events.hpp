@@ -26,8 +26,9 @@ using Time = long double;
 //   Action   a scheduled action (reverse every velocity)
 //   Sample   an observer's sampling time: no state change, not logged
 //   Segment  a disk hits a wall segment (its body or an end point); Event::j is the segment's index
-//   Thermostat  the Andersen thermostat redraws one disk's velocity (Event::j is -1); 7 is kept for the
-//            square wells' step events (issue 38)
+//   Step     two disks reach a step of their stepped potential (a square well or shoulder, outside the
+//            hard core): they cross it, trading kinetic for potential energy, or bounce off it
+//   Thermostat  the Andersen thermostat redraws one disk's velocity (Event::j is -1)
 #define EDE_EVENT_KINDS(X)    \
   X(Pair, 0, "pair")          \
   X(Wall, 1, "wall")          \
@@ -36,6 +37,7 @@ using Time = long double;
   X(Action, 4, "action")      \
   X(Sample, 5, "sample")      \
   X(Segment, 6, "segment")    \
+  X(Step, 7, "step")          \
   X(Thermostat, 8, "thermostat")
 
 #define EDE_EVENT_KIND_ENUM(name, value, text) name = value,
@@ -69,7 +71,7 @@ struct EventCounts {
   // in its loop, which asks twice per event).
   std::uint64_t events_but_redraws() const {
     return of(EventKind::Pair) + of(EventKind::Wall) + of(EventKind::Cell) + of(EventKind::Wrap) +
-           of(EventKind::Action) + of(EventKind::Segment);
+           of(EventKind::Action) + of(EventKind::Segment) + of(EventKind::Step);
   }
 };
 
@@ -100,7 +102,7 @@ struct Event {
   Time time = 0;
   EventKind kind = EventKind::Pair;
   std::int32_t i = -1;  // the disk (pair: the lower id); -1 for an action
-  std::int32_t j = -1;  // pair: the other disk; wall: WallId; wrap: WrapDir; segment: its index; action: -1
+  std::int32_t j = -1;  // pair, step: the other disk; wall: WallId; wrap: WrapDir; segment: its index; action: -1
   // Positions of i and j at the event (a wrap: i's position after it moved by one box length).
   Time xi = 0, yi = 0, xj = 0, yj = 0;
   // Velocities just before and just after the event (pair: both disks; wall, segment: i; wrap: i's, unchanged).

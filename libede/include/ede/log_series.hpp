@@ -57,6 +57,7 @@ struct LogSeries {
   std::vector<std::vector<double>> species_energy;     // [species][k]: total kinetic energy of the species
   std::vector<std::uint64_t> pair_collisions;          // pair events with time <= t (cumulative)
   std::vector<std::uint64_t> wall_collisions;          // wall events with time <= t (cumulative)
+  std::vector<double> potential_energy;                // a stepped potential's (format version 3), else empty
 
   std::uint64_t disks() const;
   double collisions_per_particle(std::size_t k) const;  // 2 pair_collisions / N

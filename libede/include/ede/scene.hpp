@@ -135,6 +135,15 @@ struct PairRestitution {  // the restitution between disks of two species (by na
   std::optional<double> roughness;  // beta of this pair (rough disks); absent: physics.roughness
 };
 
+// A stepped potential between disks of two species (by name; both empty: every pair of species without an
+// entry of its own), outside their hard core: at each distance between centres radius[k] (increasing, above
+// the largest contact distance of the two species) the potential energy changes by energy[k] on the way in
+// (a square well: energy < 0; a square shoulder: energy > 0). docs/scene-format.md, docs/physics.md.
+struct PairSteps {
+  std::string a, b;
+  std::vector<double> radius, energy;
+};
+
 // A straight wall segment from `from` to `to` ([walls] in a scene: [[walls.segments]], or the sides of a
 // [[walls.polygons]]), inside the box, with its own restitution: disks bounce off its body from either
 // side and off its end points (docs/scene-format.md; the rule: engine/collide.hpp).
@@ -159,9 +168,11 @@ struct PhysicsSpec {
   double roughness = -1;
   double wall_roughness = -1;
   std::optional<ThermostatSpec> thermostat;  // [thermostat]: the Andersen thermostat for every species (or those listed)
+  std::vector<PairSteps> steps;  // square wells and shoulders (empty: hard disks only)
 
   double wall(int side) const { return walls[std::size_t(side)].value_or(wall_restitution); }
   bool has_gravity() const { return gravity[0] != 0 || gravity[1] != 0; }
+  bool has_steps() const { return !steps.empty(); }
   // Every collision elastic: no restitution below 1 anywhere.
   bool elastic() const {
     bool all = restitution == 1;

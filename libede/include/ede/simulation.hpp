@@ -49,7 +49,9 @@ struct RunSummary {
   double setup_seconds = 0;            // placement, first predictions (resume: reading the log back)
   std::uint64_t events_before = 0;     // a resumed run: events processed before this process took it up
   std::uint64_t collisions_before = 0; // ... and collisions among them
-  double energy_initial = 0, energy_final = 0;
+  double energy_initial = 0, energy_final = 0;  // kinetic
+  double potential_final = 0;  // a stepped potential's energy at the end (0 for hard disks)
+  bool stepped = false;        // the scene has a stepped potential (the summary shows the potential energy)
   double momentum_initial[2] = {0, 0}, momentum_final[2] = {0, 0};
   std::uint64_t engine_bytes = 0;      // the engine's own arrays
   std::uint64_t peak_rss_bytes = 0;    // the whole process, from getrusage

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <type_traits>
 
+#include "analysis/step_potential.hpp"
 #include "ede/number_text.hpp"
 #include "log/log_stats.hpp"
 #include "replay/log_impl.hpp"
@@ -84,6 +85,9 @@ class EnergyWalk {
         break;
       case EventKind::Segment:
       case EventKind::Thermostat: set(std::size_t(e.i), e.vix, e.viy, T(0)); break;
+      case EventKind::Step:  // the potential energy takes what the kinetic energy gives
+        potential_ -= set(std::size_t(e.i), e.vix, e.viy, T(0)) + set(std::size_t(e.j), e.vjx, e.vjy, T(0));
+        break;
       case EventKind::Action: resync(); break;
       default: break;  // wraps move a disk, not its velocity
     }
@@ -108,7 +112,11 @@ class EnergyWalk {
     }
     s.pair_collisions.push_back(pairs_);
     s.wall_collisions.push_back(walls_);
+    if (stepped_) s.potential_energy.push_back(double(potential_));
   }
+
+  // A stepped potential's energy at the walk's start (step_potential.hpp); the step events carry it on.
+  void set_potential(long double u) { potential_ = u, stepped_ = true; }
 
  private:
   // Rough logs: a disk's energy includes I w^2 / 2 (smooth logs have no spins: + 0, exactly).
@@ -117,12 +125,14 @@ class EnergyWalk {
     const long double x = w;
     return 0.5L * (long double)p_.inertia[i] * (x * x);
   }
-  void set(std::size_t i, T vx, T vy, T w) {
+  // Returns the change of the disk's energy.
+  long double set(std::size_t i, T vx, T vy, T w) {
     const long double e = energy_of(p_.mass(i), vx, vy) + spin_energy(i, w);
     const long double delta = e - energy_[i];
     total_ += delta;
     species_sum_[std::size_t(p_.species_of(i))] += delta;
     energy_[i] = e;
+    return delta;
   }
 
   // Every energy and sum afresh from the replayed state (which, in the callback, already includes the event).
@@ -143,7 +153,24 @@ class EnergyWalk {
   long double total_ = 0;
   std::vector<long double> species_sum_;
   std::uint64_t pairs_ = 0, walls_ = 0;
+  long double potential_ = 0;
+  bool stepped_ = false;
 };
+
+// The potential energy of the replayed state's positions under the steps of the log's scene (0 without).
+template <class T>
+Result<long double> start_potential(const LogReader& log, const Particles<T>& p) {
+  const LogHeaderInfo& h = log.header();
+  if (h.format_version < 3) return 0.0L;
+  auto scene = parse_scene_text(h.scene_text, h.scene_name);
+  if (!scene) return Error{log.path() + ": the scene in the log's header no longer loads: " + scene.error().message};
+  std::vector<double> x(p.size()), y(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) x[i] = double(p.disk[i].x), y[i] = double(p.disk[i].y);
+  const std::vector<std::int32_t> species = p.species_column();
+  return (long double)step_potential_energy(
+      scene.value().physics.steps,
+      {x, y, species, h.species_names, double(h.lx), double(h.ly), h.boundary == BoundaryKind::Periodic});
+}
 
 template <class T>
 Result<LogSeries> series_in(const std::shared_ptr<const LogReader>& log, const std::vector<double>& times) {
@@ -160,6 +187,11 @@ Result<LogSeries> series_in(const std::shared_ptr<const LogReader>& log, const s
   out.species_energy.resize(h.species_names.size());
 
   EnergyWalk<T> walk(replay.particles(), h.species_names.size());
+  if (h.format_version >= 3) {
+    auto u = start_potential(*log, replay.particles());
+    if (!u) return u.error();
+    walk.set_potential(u.value());
+  }
   std::size_t k = 0;
   const auto record_before = [&](const T* event_time) {
     for (; k < times.size() && (!event_time || T(times[k]) < *event_time); ++k) {

@@ -37,7 +37,8 @@ class PressurePass {
     if ((long double)e.time > t1_) return false;
     integrate_to(e.time);
     switch (e.kind) {
-      case EventKind::Pair: pair(e); break;
+      case EventKind::Pair:
+      case EventKind::Step: pair(e); break;  // a step's impulse acts along the line of centres too
       case EventKind::Wall: wall(e); break;
       case EventKind::Action: resync(); break;
       default: break;  // wraps move a disk by a box length: no velocity change
@@ -90,7 +91,7 @@ class PressurePass {
     const long double m = p.mass(i);
     const long double dpx = m * ((long double)e.vix - vx_[i]), dpy = m * ((long double)e.viy - vy_[i]);
     out_.virial[bin_] += dx * dpx + dy * dpy;
-    ++out_.pairs[bin_];
+    if (e.kind == EventKind::Pair) ++out_.pairs[bin_];
     set_velocity(i, e.vix, e.viy);
     set_velocity(j, e.vjx, e.vjy);
   }

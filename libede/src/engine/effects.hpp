@@ -1,6 +1,7 @@
 // Effects: the small policy types an Engine is instantiated with, one axis per kind of physics a scene
-// can switch on: Boundary, Dissipation, Field, Contact (the pair root), Walls (segments), Spin and Heat
-// (the thermostat), seven axes; the engine table (engine_factory.hpp) builds ten combinations per scalar type.
+// can switch on: Boundary, Dissipation, Field, Contact (the pair root), Walls (segments), Spin, Potential
+// (square wells and shoulders) and Heat (the thermostat), eight axes; the engine table (engine_factory.hpp)
+// builds thirteen combinations per scalar type.
 //
 // The engine branches on them with `if constexpr`, so code for an effect a scene does not use is not
 // compiled into that scene's engine: an elastic gas has no restitution, no TC bookkeeping, no energy
@@ -18,6 +19,7 @@
 #include "engine/restitution.hpp"
 #include "engine/roughness.hpp"
 #include "engine/segment_walls.hpp"
+#include "engine/step_table.hpp"
 #include "engine/thermostat.hpp"
 
 namespace ede {
@@ -99,11 +101,27 @@ struct Rough {
   using State = Roughness<T>;
 };
 
+// The pair potential: hard disks only (every scene before steps existed: none of the rest is compiled in),
+// or a stepped potential outside the hard core ([[physics.steps]]: square wells and shoulders), whose
+// step events are the step room's (room_step.hpp) and whose pair depths and potential energy the engine
+// keeps (step_table.hpp). Stepped engines are Dissipative (a restitution below 1 for the hard core is a
+// known model, and 1 + xi = 2 computes the elastic rule exactly), smooth, and without segments.
+struct HardCore {
+  static constexpr bool kSteps = false;
+  template <class T>
+  using State = NoSteps;
+};
+struct Stepped {
+  static constexpr bool kSteps = true;
+  template <class T>
+  using State = StepTable<T>;
+};
+
 // The Andersen thermostat (thermostat.hpp, room_thermostat.hpp): velocities redrawn from Maxwell-Boltzmann
 // at Poisson times, a kind of event of its own. Without it (every scene before the thermostat existed) the
 // loop has no thermostat clock to compare with and nothing of it is compiled in. Thermostat engines are
 // Dissipative (a driven granular gas is the point; xi = 1 computes exactly what Elastic does), without
-// gravity, segments or rotation (refused by the scene).
+// gravity, segments, rotation or steps (refused by the scene).
 struct NoThermostat {
   static constexpr bool kThermostat = false;
   template <class T>

@@ -120,6 +120,8 @@ class EngineApi {
   virtual std::string stall_message() const = 0;  // why the run stalled or came to rest, and what to do
   virtual std::size_t memory_bytes() const = 0;   // bytes held by the engine's own arrays
   virtual double initial_kinetic_energy() const = 0;
+  // The potential energy of the pairs inside steps of a stepped potential (0 for hard disks).
+  virtual double potential_energy() const = 0;
   // Debug and test aid, O(N): pairs overlapping by more than `tolerance` of their contact distance and
   // predictions in the past, described; empty when all is well.
   virtual std::string check_invariants(double tolerance) const = 0;
@@ -138,6 +140,9 @@ enum class EngineKind {
   WallsSegments,        // wall segments inside a walled box, elastic or not, without gravity
   PeriodicRough,        // rough or spinning disks (omega, I, beta), periodic box
   WallsRough,           // rough or spinning disks, walled box (no gravity, no segments)
+  PeriodicSteps,        // a stepped potential (square wells, shoulders: Stepped), periodic box
+  WallsSteps,           // a stepped potential, walled box, without gravity
+  WallsGravitySteps,    // a stepped potential under gravity (walls)
   PeriodicThermostat,   // the Andersen thermostat, periodic box, elastic or not
   WallsThermostat,      // the Andersen thermostat, walled box (no gravity, no segments, no rotation)
 };
@@ -146,7 +151,8 @@ const char* to_string(EngineKind kind);  // "walls, dissipative", ...
 // The engine a run needs: the one with the fewest effects compiled in that computes it.
 EngineKind engine_kind_for(const EngineOptions& options);
 // Whether engine `kind` computes the run `options` describes (the boundary matches, gravity only in
-// WallsGravity, restitution below 1 or TC not in an elastic engine, segments only in WallsSegments).
+// WallsGravity, restitution below 1 or TC not in an elastic engine, segments only in WallsSegments, a
+// stepped potential only in the *Steps engines).
 bool engine_can_run(EngineKind kind, const EngineOptions& options);
 
 // A new engine for `initial`; with `resume`, the engine continues from that rebuild point instead, and

@@ -12,6 +12,57 @@ namespace ede {
 
 namespace {
 bool finite(double v) { return std::isfinite(v); }
+
+// A stepped potential: named species exist, radii finite and increasing, energies finite, and every step
+// outside the hard core of the disks it acts on (the largest radii of the two species).
+Status check_steps(const InitialState& init, const EngineOptions& options) {
+  const PhysicsSpec& ph = options.physics;
+  if (!ph.has_steps()) return Ok{};
+  if (uses_rotation(options) || !ph.segments.empty())
+    return Error{"a stepped potential with rough or spinning disks or with wall segments is not supported yet"};
+  const std::vector<std::string>& names = init.species_names;
+  const std::size_t species = std::max<std::size_t>(names.size(), 1);
+  std::vector<double> largest(species, 0);
+  for (std::size_t i = 0; i < init.size(); ++i) {
+    const std::size_t sp = i < init.species.size() ? std::size_t(init.species[i]) : 0;
+    largest[std::min(sp, species - 1)] = std::max(largest[std::min(sp, species - 1)], init.radius[i]);
+  }
+  const auto index_of = [&](const std::string& name) {
+    return std::size_t(std::find(names.begin(), names.end(), name) - names.begin());
+  };
+  for (const PairSteps& st : ph.steps) {
+    if (st.radius.empty() || st.radius.size() != st.energy.size())
+      return Error{"a stepped potential needs one energy per radius, and at least one step"};
+    for (std::size_t k = 0; k < st.radius.size(); ++k)
+      if (!finite(st.radius[k]) || !finite(st.energy[k]) || (k > 0 && !(st.radius[k] > st.radius[k - 1])))
+        return Error{"a stepped potential's radii must be finite and increasing, its energies finite"};
+    double contact = 0;
+    if (st.a.empty()) {
+      for (double r : largest) contact = std::max(contact, 2 * r);
+    } else {
+      for (const std::string& name : {st.a, st.b})
+        if (index_of(name) >= names.size())
+          return Error{"a stepped potential names species '" + name + "', which the initial state does not have"};
+      contact = largest[index_of(st.a)] + largest[index_of(st.b)];
+    }
+    if (!(st.radius.front() > contact)) {
+      std::ostringstream m;
+      m << "a stepped potential's innermost step (radius " << st.radius.front()
+        << ") lies inside the hard core of the disks it acts on (they touch at " << contact
+        << "); give step radii larger than the sum of the two radii";
+      return Error{m.str()};
+    }
+  }
+  return Ok{};
+}
+
+// The largest distance at which two disks interact: the outermost step, or a largest diameter.
+double interaction_radius(const PhysicsSpec& ph, double max_radius) {
+  double reach = 2 * max_radius;
+  for (const PairSteps& st : ph.steps)
+    if (!st.radius.empty()) reach = std::max(reach, st.radius.back());
+  return reach / 2;
+}
 }  // namespace
 
 Status check_engine_input(const InitialState& init, const EngineOptions& options, GridShape& shape) {
@@ -78,13 +129,20 @@ Status check_engine_input(const InitialState& init, const EngineOptions& options
   if (Status s = check_segments(ph.segments, init.lx, init.ly, options.boundary, ph.has_gravity(), "the physics"); !s)
     return s;
   if (Status s = check_disks_clear_of_segments(init, ph.segments, "the initial state"); !s) return s;
-  if (periodic && (init.lx < 3 * 2 * max_radius * (1 + 1e-6) || init.ly < 3 * 2 * max_radius * (1 + 1e-6))) {
+  if (Status s = check_steps(init, options); !s) return s;
+  // With a stepped potential the cells must hold the outermost step as they hold a diameter.
+  const double reach = interaction_radius(ph, max_radius);
+  if (periodic && (init.lx < 3 * 2 * reach * (1 + 1e-6) || init.ly < 3 * 2 * reach * (1 + 1e-6))) {
     std::ostringstream m;
-    m << "a periodic box must be at least three largest diameters wide on each side (largest diameter "
-      << 2 * max_radius << ", box " << init.lx << " x " << init.ly << "); enlarge the box or use walls";
+    m << "a periodic box must be at least three largest " << (ph.has_steps() ? "interaction ranges (outermost step)" : "diameters")
+      << " wide on each side (largest " << (ph.has_steps() ? "range " : "diameter ") << 2 * reach << ", box " << init.lx
+      << " x " << init.ly << "); enlarge the box or use walls";
     return Error{m.str()};
   }
-  shape = engine_grid_for(init, periodic, options.algorithm);
+  if (ph.has_steps())
+    shape = grid_shape_for(init.lx, init.ly, reach, init.size(), periodic, options.algorithm);  // no big disks
+  else
+    shape = engine_grid_for(init, periodic, options.algorithm);
   return Ok{};
 }
 

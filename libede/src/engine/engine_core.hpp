@@ -1,5 +1,6 @@
-// Engine<T, Boundary, Dissipation, Field, Contact, Walls, Spin, Heat>: the event-driven hard-disk engine, one
-// instantiation per set of effects (seven axes, effects.hpp; the instantiations that exist: engine_factory.hpp).
+// Engine<T, Boundary, Dissipation, Field, Contact, Walls, Spin, Potential, Heat>: the event-driven hard-disk
+// engine, one instantiation per set of effects (eight axes, effects.hpp; the instantiations that exist:
+// engine_factory.hpp).
 //
 // The loop: take the earliest of (next disk event, next sample, next action, next thermostat redraw, stop time); for a disk event,
 // discard it if its partner changed since it was predicted (collision counters), else hand it to the room of
@@ -10,7 +11,8 @@
 // something approaches them. The few disks much larger than the rest stay out of the cell lists
 // (big_disks.hpp), so they do not set the cell size for everyone.
 // This class is the loop and the set-up; the rest lives in rooms over its state (engine_state.hpp): one per
-// event kind (room_pair, room_wall, room_segment, room_crossing, room_wrap, room_action, room_thermostat), the predictions
+// event kind (room_pair, room_wall, room_segment, room_crossing, room_wrap, room_action, room_step,
+// room_thermostat), the predictions
 // (predict_disk), the stops (stops), the invariants (invariants) and the prefetch (prefetch). Adding an
 // event kind is its value in EDE_EVENT_KINDS (ede/events.hpp), its room, and its line in resolve() below.
 // Rejected: storing every predicted pair event (the queue grows with density and fills with stale events)
@@ -39,6 +41,7 @@
 #include "engine/room_pair.hpp"
 #include "engine/room_segment.hpp"
 #include "engine/room_thermostat.hpp"
+#include "engine/room_step.hpp"
 #include "engine/room_wall.hpp"
 #include "engine/room_wrap.hpp"
 #include "engine/stops.hpp"
@@ -46,9 +49,9 @@
 namespace ede {
 
 template <class T, class Boundary, class Dissipation, class Field = NoField, class Contact = StableContact,
-          class Walls = NoSegments, class Spin = Smooth, class Heat = NoThermostat>
+          class Walls = NoSegments, class Spin = Smooth, class Potential = HardCore, class Heat = NoThermostat>
 class Engine final : public EngineApi<T> {
-  using Fx = EffectSet<Boundary, Dissipation, Field, Contact, Walls, Spin, Heat>;
+  using Fx = EffectSet<Boundary, Dissipation, Field, Contact, Walls, Spin, Potential, Heat>;
   using State = EngineState<T, Fx>;
 
  public:
@@ -63,6 +66,7 @@ class Engine final : public EngineApi<T> {
     if constexpr (Fx::kDissipative)
       s.dissipation.setup(init.species_names, options.physics, uses_tc_model(options.physics));
     if constexpr (Fx::kRough) s.spin.setup(init.species_names, options.physics);
+    if constexpr (Fx::kSteps) s.steps.setup(init.species_names, options.physics, init.size());
     if constexpr (Fx::kThermostat)
       s.thermostat.setup(init.species_names, init.species, options.physics, options.species_thermostats, options.seed);
     if constexpr (Fx::kGravity) {
@@ -76,7 +80,7 @@ class Engine final : public EngineApi<T> {
     s.prefetch_ahead = init.size() >= options.prefetch_upcoming_from;
     s.grid.reset(shape.nx, shape.ny, s.lx, s.ly, s.p.disk);
     find_big_disks(s, init, shape.split);
-    s.pair_times_vouchable = std::is_same_v<Contact, StableContact> && s.big.empty() &&
+    s.pair_times_vouchable = std::is_same_v<Contact, StableContact> && s.big.empty() && !Fx::kSteps &&
                              (!Fx::kPeriodic || (s.grid.nx() >= 5 && s.grid.ny() >= 5));
     if constexpr (Fx::kSegments) setup_segments(s, options.physics, init, shape);
     s.queue.reset(static_cast<std::uint32_t>(s.p.size()));
@@ -93,6 +97,10 @@ class Engine final : public EngineApi<T> {
   const Particles<T>& particles() const override { return s_.p; }
   const EventCounts& counts() const override { return s_.counts; }
   double initial_kinetic_energy() const override { return s_.ke0; }
+  double potential_energy() const override {
+    if constexpr (Fx::kSteps) return s_.steps.potential;
+    return 0;
+  }
   std::string stall_message() const override { return s_.stall.message; }
   double largest_overlap() const override { return ede::largest_overlap(s_); }
   std::string check_invariants(double tolerance) const override { return ede::check_invariants(s_, tolerance); }
@@ -115,6 +123,11 @@ class Engine final : public EngineApi<T> {
     }
     if constexpr (Fx::kGravity) o << ", gravity (" << ph.gravity[0] << ", " << ph.gravity[1] << ")";
     if constexpr (Fx::kSegments) o << ", " << s_.walls.seg.size() << (s_.walls.seg.size() == 1 ? " segment" : " segments");
+    if constexpr (Fx::kSteps) {
+      std::size_t n = 0;
+      for (const PairSteps& st : ph.steps) n += st.radius.size();
+      o << ", stepped potential (" << n << (n == 1 ? " step" : " steps") << ")";
+    }
     if constexpr (Fx::kRough) {
       o << ", rough (beta=" << ph.roughness << ", beta_w=" << ph.wall_roughness;
       if (!ph.pairs.empty()) o << ", per species pair";
@@ -140,6 +153,7 @@ class Engine final : public EngineApi<T> {
     if constexpr (Fx::kDissipative) bytes += s_.dissipation.memory_bytes();
     if constexpr (Fx::kSegments) bytes += s_.walls.memory_bytes();
     if constexpr (Fx::kRough) bytes += s_.spin.memory_bytes();
+    if constexpr (Fx::kSteps) bytes += s_.steps.memory_bytes();
     if constexpr (Fx::kThermostat) bytes += s_.thermostat.memory_bytes();
     return bytes;
   }
@@ -202,7 +216,8 @@ class Engine final : public EngineApi<T> {
     const std::int32_t i = std::int32_t(tag_disk(key.tag));
     const EventKind kind = tag_kind(key.tag);
     const Prediction<T>& pr = s.pred[i];
-    if (kind == EventKind::Pair && pr.partner_moved(s.p.disk[pr.partner_id()].counter)) {
+    const bool with_disk = kind == EventKind::Pair || (Fx::kSteps && kind == EventKind::Step);
+    if (with_disk && pr.partner_moved(s.p.disk[pr.partner_id()].counter)) {
       ++s.counts.stale;
       s.now = key.time;
       predict_disk(s, i);
@@ -229,6 +244,8 @@ class Engine final : public EngineApi<T> {
       resolve_wall(s, i, pr.partner_id());
     else if constexpr (K == EventKind::Segment && Fx::kSegments)
       resolve_segment(s, i, pr.partner_id());
+    else if constexpr (K == EventKind::Step && Fx::kSteps)
+      resolve_step(s, i, pr.partner_id());
     else if constexpr (K == EventKind::Cell)
       cross_cell(s, i, pr.cross_dir(), EventKind::Cell);
     else if constexpr (K == EventKind::Wrap && Fx::kPeriodic)

@@ -64,6 +64,9 @@ const char* to_string(EngineKind k) {
     case EngineKind::WallsSegments: return "walls, segments";
     case EngineKind::PeriodicRough: return "periodic, rough";
     case EngineKind::WallsRough: return "walls, rough";
+    case EngineKind::PeriodicSteps: return "periodic, stepped";
+    case EngineKind::WallsSteps: return "walls, stepped";
+    case EngineKind::WallsGravitySteps: return "walls, gravity, stepped";
     case EngineKind::PeriodicThermostat: return "periodic, thermostat";
     case EngineKind::WallsThermostat: return "walls, thermostat";
   }
@@ -72,8 +75,13 @@ const char* to_string(EngineKind k) {
 
 EngineKind engine_kind_for(const EngineOptions& o) {
   const bool elastic = o.physics.elastic();
+  // No engine has both a thermostat and steps: the scene loader refuses such a scene.
   if (uses_thermostat(o))
     return o.boundary == BoundaryKind::Periodic ? EngineKind::PeriodicThermostat : EngineKind::WallsThermostat;
+  if (o.physics.has_steps()) {
+    if (o.boundary == BoundaryKind::Periodic) return EngineKind::PeriodicSteps;
+    return o.physics.has_gravity() ? EngineKind::WallsGravitySteps : EngineKind::WallsSteps;
+  }
   if (uses_rotation(o)) return o.boundary == BoundaryKind::Periodic ? EngineKind::PeriodicRough : EngineKind::WallsRough;
   if (!o.physics.segments.empty()) return EngineKind::WallsSegments;
   if (o.boundary == BoundaryKind::Periodic) return elastic ? EngineKind::PeriodicElastic : EngineKind::PeriodicDissipative;
@@ -85,6 +93,12 @@ bool engine_can_run(EngineKind k, const EngineOptions& o) {
   const bool periodic = o.boundary == BoundaryKind::Periodic, gravity = o.physics.has_gravity();
   const bool elastic = o.physics.elastic(), segments = !o.physics.segments.empty();
   const bool rough = uses_rotation(o), heat = uses_thermostat(o);
+  // Hard disks only in the engines without steps, and a stepped potential only in the stepped ones (a
+  // stepped engine without steps would run a hard-disk scene, but nothing compares them: not offered).
+  const bool steps = o.physics.has_steps();
+  const bool stepped_kind =
+      k == EngineKind::PeriodicSteps || k == EngineKind::WallsSteps || k == EngineKind::WallsGravitySteps;
+  if (steps != stepped_kind) return false;
   switch (k) {
     case EngineKind::PeriodicElastic: return periodic && !gravity && elastic && !segments && !rough && !heat;
     case EngineKind::PeriodicDissipative: return periodic && !gravity && !segments && !rough && !heat;
@@ -96,8 +110,11 @@ bool engine_can_run(EngineKind k, const EngineOptions& o) {
     // part), which is what ede-bench effects and the bit-for-bit test compare.
     case EngineKind::PeriodicRough: return periodic && !gravity && !segments && !heat;
     case EngineKind::WallsRough: return !periodic && !gravity && !segments && !heat;
+    case EngineKind::PeriodicSteps: return periodic && !gravity && !segments && !rough && !heat;
+    case EngineKind::WallsSteps: return !periodic && !gravity && !segments && !rough && !heat;
+    case EngineKind::WallsGravitySteps: return !periodic && !segments && !rough && !heat;
     // A scene without a thermostat in a thermostat engine computes what the dissipative engine does (the
-    // clock is never due), which is what ede-bench effects compares.
+    // clock is never due), which is what ede-bench effects compares. Steps are kept out above.
     case EngineKind::PeriodicThermostat: return periodic && !gravity && !segments && !rough;
     case EngineKind::WallsThermostat: return !periodic && !gravity && !segments && !rough;
   }

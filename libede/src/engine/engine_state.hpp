@@ -32,9 +32,9 @@
 
 namespace ede {
 
-// The seven effect axes of an instantiation as one type (effects.hpp).
+// The eight effect axes of an instantiation as one type (effects.hpp).
 template <class BoundaryP, class DissipationP, class FieldP, class ContactP, class WallsP, class SpinP,
-          class HeatP = NoThermostat>
+          class PotentialP = HardCore, class HeatP = NoThermostat>
 struct EffectSet {
   using Boundary = BoundaryP;
   using Dissipation = DissipationP;
@@ -42,18 +42,22 @@ struct EffectSet {
   using Contact = ContactP;
   using Walls = WallsP;
   using Spin = SpinP;
+  using Potential = PotentialP;
   using Heat = HeatP;
   static constexpr bool kPeriodic = Boundary::kPeriodic;
   static constexpr bool kDissipative = Dissipation::kDissipative;
   static constexpr bool kGravity = Field::kGravity;
   static constexpr bool kSegments = Walls::kSegments;
   static constexpr bool kRough = Spin::kRough;
+  static constexpr bool kSteps = Potential::kSteps;
   static constexpr bool kThermostat = Heat::kThermostat;
   static_assert(!kRough || (kDissipative && !kGravity && !kSegments),
                 "rough disks run in a dissipative engine without gravity or segments");
   static_assert(!kSegments || (!kPeriodic && !kGravity), "segments need walls and no gravity");
-  static_assert(!kThermostat || (kDissipative && !kGravity && !kSegments && !kRough),
-                "the thermostat runs in a dissipative engine without gravity, segments or rotation");
+  static_assert(!kSteps || (kDissipative && !kRough && !kSegments),
+                "stepped potentials run in a dissipative engine without rough disks or segments");
+  static_assert(!kThermostat || (kDissipative && !kGravity && !kSegments && !kRough && !kSteps),
+                "the thermostat runs in a dissipative engine without gravity, segments, rotation or steps");
 };
 
 // When the run stops, and what happens at times other than disk events (stops.hpp).
@@ -99,6 +103,7 @@ struct EngineState {
   [[no_unique_address]] typename Fx::Field::template State<T> field;
   [[no_unique_address]] typename Fx::Walls::template State<T> walls;
   [[no_unique_address]] typename Fx::Spin::template State<T> spin;
+  [[no_unique_address]] typename Fx::Potential::template State<T> steps;
   [[no_unique_address]] typename Fx::Heat::template State<T> thermostat;
 
   // Position and velocity of a disk at now: straight lines, or parabolas under gravity.
@@ -161,7 +166,8 @@ struct EngineState {
 
   // The partner's counter a pair prediction is checked against (0 for the others).
   std::uint32_t counter_of(const Candidate<T>& c) const {
-    return c.kind == EventKind::Pair && c.partner >= 0 ? p.disk[c.partner].counter : 0;
+    const bool with_disk = c.kind == EventKind::Pair || (Fx::kSteps && c.kind == EventKind::Step);
+    return with_disk && c.partner >= 0 ? p.disk[c.partner].counter : 0;
   }
 
   void emit(const EventOutcome<T>& outcome) const {

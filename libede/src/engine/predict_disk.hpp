@@ -56,6 +56,8 @@ void rebuild_predictions(S& s, bool notify) {
     else
       s.grid.insert(std::int32_t(i), cell);
   }
+  if constexpr (S::Effects::kSteps)
+    if (!s.steps.depths_known) init_depths(s);  // the start, or a resumed run's rebuild point
   for (std::size_t i = 0; i < s.p.size(); ++i) predict_disk(s, std::int32_t(i));
   if constexpr (S::Effects::kDissipative) s.dissipation.ke = kinetic_energy(s.p);
   restart_thermostat_clock(s);

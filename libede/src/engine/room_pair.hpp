@@ -11,6 +11,7 @@
 #include "engine/collide.hpp"
 #include "engine/engine_state.hpp"
 #include "engine/neighbours.hpp"
+#include "engine/room_step.hpp"
 
 namespace ede {
 
@@ -67,6 +68,14 @@ template <class S, class T = typename S::Scalar>
       !S::Effects::kGravity && std::is_same_v<typename S::Effects::Contact, StableContact>;
   const Disk<T>& di = s.p.disk[i];
   const Disk<T>& dk = s.p.disk[k];
+  if constexpr (S::Effects::kSteps) {  // the core or a step (room_step.hpp)
+    bool skip_core = false;
+    if (k == di.last_partner) {
+      const Position2<T> pk = s.pos_at(dk);
+      skip_core = just_collided(s, i, k, (pk.x + sx) - pi.x, (pk.y + sy) - pi.y);
+    }
+    return consider_stepped_pair(s, i, pi, vi, k, sx, sy, skip_core, best);
+  }
   if (k == di.last_partner) {
     const Position2<T> pk = s.pos_at(dk);
     if (just_collided(s, i, k, (pk.x + sx) - pi.x, (pk.y + sy) - pi.y)) return;

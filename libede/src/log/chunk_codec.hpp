@@ -24,6 +24,9 @@
 // Rough runs (the state has omega) add one column, spins: varint zigzag(key(w) - key(prediction)) of
 // pair w_i', w_j' and wall w' against the rough rule (FORMAT.md, "Rotation"); other runs have it empty.
 // Segment events (kind 6) take the disk in `disks` and the segment's index in `partners`, like a wall.
+// Encoding 3 (format version 3) is encoding 2 plus step events (kind 7: a pair at a step of a stepped
+// potential): ids as a pair's, the time coded as an unpredicted one (odd code), residuals of v_i'x, v_i'y,
+// v_j'x, v_j'y against the velocities before the event (EventCoder sets them as the predictions).
 // Both are lossless whatever the predictions' quality: a residual of 0 costs one byte, a bad prediction a
 // few more. Rejected for encoding 2: keeping v_i' raw (60 % of a version 1 log) and the momentum
 // prediction of v_j' (it is exact only when the rule's own v_j' happens to round the same way).
@@ -73,11 +76,12 @@ inline T apply_residual(u128 r, T predicted) {
 // Kind byte of encoding 2: this collision was made elastic by the TC model (the rule uses 1 + xi = 2).
 constexpr unsigned char kTcElasticFlag = 0x10;
 constexpr std::uint32_t kLatestColumnEncoding = 3;
+// Events whose ids are a pair (i, then zigzag(j - i)) and which carry both disks' velocities.
+[[gnu::always_inline]] inline bool pair_like(EventKind k) { return k == EventKind::Pair || k == EventKind::Step; }
 // A resumable keyframe's engineCounts: the event kinds there were before segments (pair .. sample), stale,
 // tc_elastic, and then the segment events only in a run with segments (FORMAT.md, "Keyframe"); in version 3
-// always the kinds 6, 7 and 8 (segment, step, thermostat) there.
+// always the segment and step events (kinds 6, 7), then the thermostat's (kind 8) in a run with it.
 constexpr int kCountedKindsV2 = 6;
-constexpr int kLaterKindsV3 = 3;
 
 // Bytes of one column, where the encoder keeps them (valid until its next reset or add).
 struct ColumnView {
@@ -177,12 +181,12 @@ class ChunkEncoder {
 
   void add_v2(const CodedEvent<T>& e) {
     kinds_.byte(static_cast<unsigned char>(static_cast<unsigned char>(e.kind) | (e.tc_elastic ? kTcElasticFlag : 0)));
-    if (e.kind == EventKind::Pair || e.kind == EventKind::Wall || e.kind == EventKind::Wrap ||
+    if (pair_like(e.kind) || e.kind == EventKind::Wall || e.kind == EventKind::Wrap ||
         e.kind == EventKind::Segment)
       add_ids(e);
     if (e.kind == EventKind::Thermostat) add_redrawn(e);
     add_time_v2(e.time, e.predicted_time);
-    const int velocities = e.kind == EventKind::Pair ? 4 : e.kind == EventKind::Wall || e.kind == EventKind::Segment ? 2 : 0;
+    const int velocities = pair_like(e.kind) ? 4 : e.kind == EventKind::Wall || e.kind == EventKind::Segment ? 2 : 0;
     const int spins = !rough_ ? 0 : e.kind == EventKind::Pair ? 2 : e.kind == EventKind::Wall ? 1 : 0;
     if (e.velocities_predicted) {  // every residual 0: one byte each
       residuals_.zeros(std::size_t(velocities));
@@ -206,6 +210,7 @@ class ChunkEncoder {
     u128 previous = previous_key_;
     events.for_each([&](const CodedEvent<T>& e) __attribute__((always_inline)) {
       *kinds++ = static_cast<unsigned char>(static_cast<unsigned char>(e.kind) | (e.tc_elastic ? kTcElasticFlag : 0));
+      // A pair first and with one comparison, as before steps existed: steps (encoding 3) come last.
       if (e.kind == EventKind::Pair) {
         disks = put_varint(disks, std::uint64_t(std::uint32_t(e.i)));
         const std::int64_t d = std::int64_t(e.j) - std::int64_t(e.i);
@@ -217,9 +222,16 @@ class ChunkEncoder {
         disks = put_varint(disks, std::uint64_t(std::uint32_t(e.i)));
         add_scalar(e.v[0]);
         add_scalar(e.v[1]);
+      } else if (e.kind == EventKind::Step) {
+        disks = put_varint(disks, std::uint64_t(std::uint32_t(e.i)));
+        const std::int64_t d = std::int64_t(e.j) - std::int64_t(e.i);
+        partners = put_varint(partners, (std::uint64_t(d) << 1) ^ std::uint64_t(d >> 63));
       }
       times = put_varint(times, time_code(e.time, e.predicted_time, previous));
-      const int velocities = e.kind == EventKind::Pair ? 4 : e.kind == EventKind::Wall || e.kind == EventKind::Segment ? 2 : 0;
+      const int velocities = e.kind == EventKind::Pair                                   ? 4
+                             : e.kind == EventKind::Wall || e.kind == EventKind::Segment ? 2
+                             : e.kind == EventKind::Step                                 ? 4
+                                                                                         : 0;
       const int spun = !rough_ ? 0 : e.kind == EventKind::Pair ? 2 : e.kind == EventKind::Wall ? 1 : 0;
       if (e.velocities_predicted) {  // every residual 0: one byte each
         for (int k = 0; k < velocities; ++k) *residuals++ = 0;
@@ -266,7 +278,7 @@ class ChunkEncoder {
 
   void add_ids(const CodedEvent<T>& e) {
     disks_.varint(u128(e.i));
-    if (e.kind == EventKind::Pair)
+    if (pair_like(e.kind))
       partners_.varint(zigzag(i128(e.j) - i128(e.i)));
     else
       partners_.varint(u128(e.j));
@@ -401,7 +413,8 @@ inline bool finite_record(const Disk<T>& d) {
 template <class T>
 [[gnu::always_inline]] inline bool apply_event(const DecodedEvent<T>& e, Particles<T>& p, T lx, T ly) {
   switch (e.kind) {
-    case EventKind::Pair: {
+    case EventKind::Pair:
+    case EventKind::Step: {
       Disk<T>& a = p.disk[std::size_t(e.i)];
       Disk<T>& b = p.disk[std::size_t(e.j)];
       if (e.advanced) {

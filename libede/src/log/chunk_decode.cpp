@@ -137,7 +137,7 @@ bool ChunkDecoder<T>::read_kind(DecodedEvent<T>& e) {
   e.kind = static_cast<EventKind>(k);
   const bool known = e.kind == EventKind::Pair || e.kind == EventKind::Wall || e.kind == EventKind::Wrap ||
                      e.kind == EventKind::Action || e.kind == EventKind::Segment ||
-                     (e.kind == EventKind::Thermostat && encoding_ >= 3);
+                     ((e.kind == EventKind::Step || e.kind == EventKind::Thermostat) && encoding_ >= 3);
   if (!known) return fail("unknown event kind " + std::to_string(kind));
   if (e.tc_elastic && e.kind != EventKind::Pair && e.kind != EventKind::Wall && e.kind != EventKind::Segment)
     return fail("a TC flag on an event that is not a collision");
@@ -147,7 +147,8 @@ bool ChunkDecoder<T>::read_kind(DecodedEvent<T>& e) {
 template <class T>
 bool ChunkDecoder<T>::read_ids(DecodedEvent<T>& e) {
   switch (e.kind) {
-    case EventKind::Pair: {
+    case EventKind::Pair:
+    case EventKind::Step: {  // encoding 3: a step event names its pair as a collision does
       u128 zj;
       if (!read_disk(disks_, e.i)) return false;
       if (!partners_.varint(zj, 33)) return fail("a pair partner is cut short or out of range");  // zigzag of an int32 difference
@@ -260,6 +261,11 @@ bool ChunkDecoder<T>::read_v2(const Particles<T>& p, DecodedEvent<T>& e) {
                             e.tc_elastic, v, w);
     return read_residual(v[0], e.vix) && read_residual(v[1], e.viy) && read_residual(v[2], e.vjx) &&
            read_residual(v[3], e.vjy) && (!rough || (read_spin(w[0], e.wi) && read_spin(w[1], e.wj)));
+  }
+  if (e.kind == EventKind::Step) {  // encoding 3: no predictions yet (FORMAT.md, "Step events")
+    if (!read_time_v2([] { return rules::v2::kNever<T>; }, e.time)) return false;
+    return read_residual(vx_at(p, e.i, e.time), e.vix) && read_residual(vy_at(p, e.i, e.time), e.viy) &&
+           read_residual(vx_at(p, e.j, e.time), e.vjx) && read_residual(vy_at(p, e.j, e.time), e.vjy);
   }
   const Disk<T>* d = e.i >= 0 ? &p.disk[std::size_t(e.i)] : nullptr;
   if (!read_time_v2([&] { return d ? predicted_event_time(physics_, e.kind, *d, *d, e.j) : rules::v2::kNever<T>; },

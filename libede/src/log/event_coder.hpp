@@ -55,6 +55,7 @@ class EventCoder {
       c.velocities_predicted = false;
       return c;
     }
+    if (e.kind == EventKind::Step) return code_step(e, c);
     if (!collision(e.kind)) return c;
     if (velocities_exact) {
       if (check_) check_velocities(e, p, c);
@@ -86,6 +87,14 @@ class EventCoder {
     c.v[0] = e.vix, c.v[1] = e.viy, c.v[2] = e.vjx, c.v[3] = e.vjy;
     c.pv[0] = e.vix0, c.pv[1] = e.viy0, c.pv[2] = e.vjx0, c.pv[3] = e.vjy0;
     if (e.kind == EventKind::Pair) c.mi = p.mass(std::size_t(e.i)), c.mj = p.mass(std::size_t(e.j));
+    return c;
+  }
+
+  // A step event (format version 3): no predictor yet, its velocities against those before the event.
+  static CodedEvent<T> code_step(const EventOutcome<T>& e, CodedEvent<T>& c) {
+    c.pv[0] = e.vix0, c.pv[1] = e.viy0, c.pv[2] = e.vjx0, c.pv[3] = e.vjy0;
+    set_after(e, c);
+    c.velocities_predicted = false;
     return c;
   }
 

@@ -58,12 +58,13 @@ class IdLookahead {
       if (disk < n_) prefetch(p, std::size_t(disk));
       return true;
     }
-    if (kind != EventKind::Pair && kind != EventKind::Wall && kind != EventKind::Wrap && kind != EventKind::Segment)
+    if (kind != EventKind::Pair && kind != EventKind::Wall && kind != EventKind::Wrap && kind != EventKind::Segment &&
+        kind != EventKind::Step)
       return true;  // actions carry no ids
     u128 disk, partner;
     if (!disks_.varint(disk, 32) || !partners_.varint(partner, 33)) return on_ = false;
     if (disk < n_) prefetch(p, std::size_t(disk));
-    if (kind == EventKind::Pair) {
+    if (kind == EventKind::Pair || kind == EventKind::Step) {
       const i128 j = i128(disk) + unzigzag(partner);
       if (j >= 0 && j < i128(n_)) prefetch(p, std::size_t(j));
     }

@@ -14,11 +14,8 @@
 namespace ede::logfmt {
 
 constexpr std::uint32_t kFormatVersion = 2;       // what the writer writes by default
+constexpr std::uint32_t kNewestFormatVersion = 3;  // the newest a reader reads: 2 plus step and thermostat events
 constexpr std::uint32_t kOldestFormatVersion = 1;  // the oldest a reader reads
-constexpr std::uint32_t kNewestFormatVersion = 3;  // the newest a reader reads and a writer writes
-// Version 3 is version 2 with more kinds of event (FORMAT.md): the thermostat's. Written by runs that have
-// them; every other run keeps writing version 2, byte for byte as before.
-constexpr std::uint32_t kThermostatFormatVersion = 3;
 // Like PNG's: a non-ASCII first byte, and CR LF / SUB / LF to catch text-mode transfers.
 constexpr std::array<unsigned char, 8> kFileMagic = {0x89, 'E', 'D', 'E', '\r', '\n', 0x1A, '\n'};
 constexpr std::array<unsigned char, 8> kTrailerMagic = {'E', 'D', 'E', '-', 'E', 'N', 'D', '\n'};

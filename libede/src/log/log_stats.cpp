@@ -21,7 +21,8 @@ bool loggable(unsigned char kind, std::uint32_t encoding) {
     case EventKind::Wall:
     case EventKind::Wrap:
     case EventKind::Action:
-    case EventKind::Segment: return true;
+    case EventKind::Segment:
+    case EventKind::Step: return true;
     case EventKind::Thermostat: return encoding >= 3;
     default: return false;
   }

@@ -3,10 +3,12 @@
 // Chunk boundaries are a function of the event index alone (every chunk_events events, and at every
 // keyframe), so a resumed run cut at a keyframe writes exactly the chunks the uninterrupted run wrote.
 // The event loop only copies each event (with its time's prediction where the engine did not vouch for it,
-// made from the records of its disks just before it) into the open batch's buffer (log/logged_event.hpp);
-// the columns are coded on the record writer's worker (ChunkCoder below) from those alone, batch by batch,
-// and the record is built at the chunk's end. The worker runs batches and records in submission order, so
-// the bytes are those of coding on the loop. Rejected: coding on the event loop (measured: at N = 1e4, log format 2's predictions took the
+// made from the records of its disks just before it) into the open chunk's buffer (log/logged_event.hpp);
+// the columns are coded on the record writer's worker (ChunkCoder below) from those alone. The worker
+// builds records in submission order, so the bytes are those of coding on the loop. Rejected: handing a
+// chunk's events over in batches of 2048 (warm buffers, peak RSS at N = 10^4 14.6 -> 11.7 MiB): with loop
+// and worker on one core its eight wake-ups per chunk cost more than the warm buffers saved (log cost
+// 13.7 % against 12.4 % without, ede-bench peers, 3 rounds, 2026-11-29). Rejected: coding on the event loop (measured: at N = 1e4, log format 2's predictions took the
 // logging overhead from 8-14 % to 34 % with a second core free), and a replayed copy of the state on the
 // worker (its cache misses were most of the log's cost when loop and worker share one core).
 #include "log/log_writer.hpp"
@@ -153,11 +155,9 @@ struct ChunkCoder {
 
   ChunkCoder(std::uint32_t version, bool rough) : chunk(version, rough), rotation(rough) {}
 
-  // A chunk is coded in batches, in order: begin, add for each batch, then message.
-  void begin(std::uint64_t first_event) { chunk.reset(first_event); }
-  void add(const ChunkEvents<T>& events) { chunk.add_all(events); }
-
-  FlatMessage message(std::uint64_t first_event) {
+  FlatMessage code(std::uint64_t first_event, const ChunkEvents<T>& events) {
+    chunk.reset(first_event);
+    chunk.add_all(events);
     const ChunkColumns c = chunk.columns();
     FlatMessageBuilder message(root_words<logschema::Chunk>(rotation, kChunkWords, kChunkPointers) +
                                    message_words_of(c.times.size) + message_words_of(c.kinds.size) +
@@ -188,9 +188,9 @@ struct ChunkCoder {
   FlatMessage spare;
 };
 
-// Batch buffers handed back by the worker once coded, for the event loop to fill again: a new buffer for
-// every chunk meant fresh pages for every chunk (measured: ~6 % of a run at N = 10^4 in page faults, with
-// loop and worker on one core).
+// Chunk buffers handed back by the worker once coded, for the event loop to fill again: a new 16 384-event
+// buffer for every chunk meant fresh pages for every chunk (measured: ~6 % of a run at N = 10^4 in page
+// faults, with loop and worker on one core).
 template <class T>
 class ChunkPool {
  public:
@@ -208,7 +208,7 @@ class ChunkPool {
   }
 
  private:
-  static constexpr std::size_t kKept = 4;
+  static constexpr std::size_t kKept = 2;
   std::mutex mutex_;
   std::vector<ChunkEvents<T>> spare_;
 };
@@ -225,17 +225,9 @@ struct LogWriter<T>::Impl {
   ChunkPool<T> pool;
   bool coder_ready = false;
   std::uint64_t next_keyframe = 0;  // the logged-event count at which the next periodic keyframe is written
-  // The open chunk, on the event loop: its events as the engine reported them, handed to the worker in
-  // batches of kBatchEvents (the last one with the record). A whole chunk's buffer (16 384 events, 384 KB)
-  // was cold by the time it was refilled and half evicted by the time the worker coded it, and it took
-  // the engine's data out of a 512 KB L2 when loop and worker share one core; a batch is coded while it is
-  // still in cache and its buffer comes back warm.
-  static constexpr std::size_t kBatchEvents = 2048;
-  ChunkEvents<T> chunk_events;       // the open batch
-  std::uint64_t chunk_first = 0;     // the open chunk's first event
-  std::uint64_t chunk_count = 0;     // its events so far (in batches handed over and in chunk_events)
-  bool chunk_begun = false;          // a batch of it was handed over (the worker's coder has begun it)
-  T chunk_time_first{}, chunk_time_last{};
+  // The open chunk, on the event loop: its events as the engine reported them.
+  ChunkEvents<T> chunk_events;
+  std::uint64_t chunk_first = 0;
   std::uint64_t logged = 0;
   struct Pending {  // an index entry whose offset is known once the record is written
     std::size_t sequence;
@@ -365,57 +357,25 @@ struct LogWriter<T>::Impl {
     }
   }
 
-  std::size_t batch_events() const { return std::min<std::size_t>(kBatchEvents, settings.chunk_events); }
-
-  // One more event in the open chunk (after it went into chunk_events): hands over a full batch, writes a
-  // full chunk.
-  void note_event(T time) {
-    if (chunk_count++ == 0) chunk_time_first = time;
-    chunk_time_last = time;
-    if (chunk_count >= settings.chunk_events)
-      flush_chunk();
-    else if (chunk_events.size() >= batch_events())
-      hand_batch();
-  }
-
-  void next_batch() {
-    chunk_events = pool.take(run.rotation, settings.format_version < 2);
-    chunk_events.reserve(batch_events());
-  }
-
-  // The open batch to the worker's coder (not the chunk's last: flush_chunk hands that one with the record).
-  void hand_batch() {
-    out.submit_task([coder = &coder, pool = &pool, first = chunk_first, begin = !chunk_begun,
-                     events = std::move(chunk_events)]() mutable {
-      if (begin) coder->begin(first);
-      coder->add(events);
-      pool->give(std::move(events));
-    });
-    chunk_begun = true;
-    next_batch();
-  }
-
   void flush_chunk() {
-    if (chunk_count == 0) return;
+    if (chunk_events.empty()) return;
     logfmt::RecordHeader rh;
     rh.kind = logfmt::RecordKind::Chunk;
     rh.first_event = chunk_first;
-    rh.event_count = chunk_count;
-    rh.time_first = double(chunk_time_first);
-    rh.time_last = double(chunk_time_last);
-    const std::size_t seq = out.submit_built(rh, [coder = &coder, pool = &pool, first = chunk_first, begin = !chunk_begun,
+    rh.event_count = chunk_events.size();
+    rh.time_first = double(chunk_events.time_first());
+    rh.time_last = double(chunk_events.time_last());
+    const std::size_t seq = out.submit_built(rh, [coder = &coder, pool = &pool, first = chunk_first,
                                                   events = std::move(chunk_events)]() mutable {
-      if (begin) coder->begin(first);
-      coder->add(events);
+      FlatMessage m = coder->code(first, events);
       pool->give(std::move(events));
-      return coder->message(first);
+      return m;
     });
     pending.push_back({seq, {std::uint8_t(logfmt::RecordKind::Chunk), 0, rh.first_event, rh.event_count,
                              rh.time_first, rh.time_last, false}});
-    next_batch();
+    chunk_events = pool.take(run.rotation, settings.format_version < 2);
+    chunk_events.reserve(settings.chunk_events);
     chunk_first = logged;
-    chunk_count = 0;
-    chunk_begun = false;
   }
 
   // A large keyframe (its state columns above the record writer's two-pass size) is built once everything
@@ -459,7 +419,7 @@ struct LogWriter<T>::Impl {
     if (rebuild) {
       words += message_words_of(4 * n);
       if (!rebuild->particles.last_collision.empty()) words += column;
-      words += kCountedKindsV2 + 3 + (settings.format_version >= 3 ? 2 : 0);
+      words += kCountedKindsV2 + 3 + (settings.format_version >= 3 ? 1 : 0) + (run.thermostat ? 1 : 0);
     }
     return words;
   }
@@ -472,15 +432,18 @@ struct LogWriter<T>::Impl {
       set_scalar_column<T>(k.initLastCollision(std::uint32_t(p.size() * kScalarWidth<T>)), p.size(),
                            [&](std::size_t i) { return p.last_collision[i]; });
     // The six kinds before segments, stale, tc_elastic; then segment events only in runs with segments
-    // (FORMAT.md), so the keyframes of every other run keep their bytes.
-    // Version 3: always the segment, step and thermostat events after them (kinds 6, 7, 8).
-    const int later = settings.format_version >= 3 ? kLaterKindsV3 : !run.segments.empty() ? 1 : 0;
-    auto counts = k.initEngineCounts(std::uint32_t(kCountedKindsV2 + 2 + later));
+    // (FORMAT.md), so the keyframes of every other run keep their bytes; format version 3: segment and
+    // step events, always, and then the thermostat's redraws in a run with the thermostat.
+    const bool v3 = settings.format_version >= 3;
+    const bool segments = !run.segments.empty() || v3;
+    const bool redraws = v3 && run.thermostat;
+    auto counts = k.initEngineCounts(kCountedKindsV2 + 2 + (segments ? 1 : 0) + (v3 ? 1 : 0) + (redraws ? 1 : 0));
     for (int c = 0; c < kCountedKindsV2; ++c) counts.set(std::uint32_t(c), r.counts.by_kind[c]);
     counts.set(kCountedKindsV2, r.counts.stale);
     counts.set(kCountedKindsV2 + 1, r.counts.tc_elastic);
-    for (int c = 0; c < later; ++c)
-      counts.set(std::uint32_t(kCountedKindsV2 + 2 + c), kCountedKindsV2 + c < kEventKindCount ? r.counts.by_kind[kCountedKindsV2 + c] : 0);
+    if (segments) counts.set(kCountedKindsV2 + 2, r.counts.of(EventKind::Segment));
+    if (v3) counts.set(kCountedKindsV2 + 3, r.counts.of(EventKind::Step));
+    if (redraws) counts.set(kCountedKindsV2 + 4, r.counts.of(EventKind::Thermostat));
     k.setNextSample(r.next_sample_index);
     k.setNextAction(r.next_action_index);
     k.setSameTimeEvents(r.same_time_events);
@@ -531,6 +494,13 @@ Result<std::unique_ptr<LogWriter<T>>> LogWriter<T>::create(const std::string& pa
                                                            const LogSettings& settings,
                                                            const LogContinuation* continuation) {
   if (settings.chunk_events == 0) return Error{"log settings: chunk_events must be positive"};
+  // Step and thermostat events exist in format version 3 only: such a run is written in it whatever its
+  // settings name, so every way to write a log gets it right.
+  if ((run.steps || run.thermostat) && settings.format_version < 3) {
+    LogSettings v3 = settings;
+    v3.format_version = 3;
+    return create(path, run, v3, continuation);
+  }
   if (settings.format_version < logfmt::kOldestFormatVersion || settings.format_version > logfmt::kNewestFormatVersion)
     return Error{"log settings: format version " + std::to_string(settings.format_version) + " is not one this ede writes"};
   const std::uint64_t start = continuation ? continuation->cut_offset : 0;
@@ -547,11 +517,9 @@ Result<std::unique_ptr<LogWriter<T>>> LogWriter<T>::create(const std::string& pa
   }
   if (run.rotation && settings.format_version < 2)
     return Error{"log settings: a run of rough (rotating) disks is written in format version 2 only"};
-  if (run.thermostat && settings.format_version < logfmt::kThermostatFormatVersion)
-    return Error{"log settings: a run with the thermostat is written in format version 3 only (its events are new in it)"};
   impl->chunk_first = impl->logged;
   impl->chunk_events = ChunkEvents<T>(run.rotation, settings.format_version < 2);
-  impl->chunk_events.reserve(impl->batch_events());
+  impl->chunk_events.reserve(settings.chunk_events);
   return std::unique_ptr<LogWriter<T>>(new LogWriter<T>(std::move(impl)));
 }
 
@@ -574,7 +542,7 @@ void LogWriter<T>::on_event(const EventOutcome<T>& e, const Particles<T>& p) {
   w.ensure_coder(p);
   w.event_coder.add(e, p, w.chunk_events);
   ++w.logged;
-  w.note_event(e.time);
+  if (w.chunk_events.size() >= w.settings.chunk_events) w.flush_chunk();
   if (w.logged == w.next_keyframe) {
     w.write_keyframe(p, e.time, nullptr);
     w.next_keyframe += w.settings.keyframe_interval;

@@ -61,6 +61,9 @@ struct LogRunInfo {
   // Rough or spinning disks (EngineOptions::rotation): the header then carries I per disk and 1 + beta, and
   // chunks and keyframes the spins (FORMAT.md, "Rotation"). beta of S x S species pairs, then of the walls.
   bool rotation = false;
+  // A stepped potential (Scene's physics.steps): its step events exist from format version 3 on, so create()
+  // writes such a run in version 3 whatever version 1 or 2 the settings name (FORMAT.md, version 3).
+  bool steps = false;
   std::vector<double> pair_roughness{-1};
   double wall_roughness = -1;
   std::string engine_version, compiler, compile_flags;  // empty: this build's (a converted log keeps its own)

@@ -8,9 +8,8 @@
 // only for an event whose velocities were not vouched for, the velocities and their predictions in
 // `extra`; the time's prediction is kept apart (`predicted`) only where it differs from the time, so a
 // LoggedEvent is 24 bytes in double (32 with the prediction in it): less for the loop to write and the
-// worker to read when both share one core and its L2 with the engine's data (the loop hands them over in
-// batches: log_writer.cpp). The worker turns these into residuals and varints, builds the record and
-// compresses it.
+// worker to read when both share one core and its L2 with the engine's data. The worker turns these into
+// residuals and varints, builds the record and compresses it.
 // Format version 1 (ede-replay convert, comparisons) keeps in `extra` what its coder reads: the velocities
 // after and before the event and the two masses.
 // Rejected: the worker keeping a replayed copy of the state to predict from (40 B/disk; its cache misses,

@@ -83,14 +83,14 @@ RecordWriter::~RecordWriter() { finish(); }
 void RecordWriter::write_raw(std::vector<unsigned char> bytes) {
   std::unique_lock lock(mutex_);
   idle_.wait(lock, [&] { return queue_.size() < kMaxQueued; });
-  queue_.push_back(Job{true, {}, std::move(bytes), {}, {}, {}});
+  queue_.push_back(Job{true, {}, std::move(bytes), {}, {}});
   wake_.notify_one();
 }
 
 std::size_t RecordWriter::submit(logfmt::RecordHeader header, FlatMessage content) {
   std::unique_lock lock(mutex_);
   idle_.wait(lock, [&] { return queue_.size() < kMaxQueued; });
-  queue_.push_back(Job{false, header, {}, std::move(content), {}, {}});
+  queue_.push_back(Job{false, header, {}, std::move(content), {}});
   wake_.notify_one();
   return submitted_++;
 }
@@ -98,18 +98,9 @@ std::size_t RecordWriter::submit(logfmt::RecordHeader header, FlatMessage conten
 std::size_t RecordWriter::submit_built(logfmt::RecordHeader header, Builder build) {
   std::unique_lock lock(mutex_);
   idle_.wait(lock, [&] { return queue_.size() < kMaxQueued; });
-  queue_.push_back(Job{false, header, {}, {}, std::move(build), {}});
+  queue_.push_back(Job{false, header, {}, {}, std::move(build)});
   wake_.notify_one();
   return submitted_++;
-}
-
-void RecordWriter::submit_task(Task task) {
-  std::unique_lock lock(mutex_);
-  idle_.wait(lock, [&] { return queue_.size() < kMaxQueued; });
-  Job job{false, {}, {}, {}, {}};
-  job.task = std::move(task);
-  queue_.push_back(std::move(job));
-  wake_.notify_one();
 }
 
 void RecordWriter::flush() {
@@ -166,7 +157,6 @@ void RecordWriter::work() {
       busy_ = true;
     }
     const std::uint64_t at = offset_;
-    const bool record = !job.raw && !job.task;
     std::string problem;
     if (error_.empty()) try {
         problem = write_job(job);
@@ -176,7 +166,7 @@ void RecordWriter::work() {
       }
     {
       std::lock_guard lock(mutex_);
-      if (record) offsets_.push_back(at);
+      if (!job.raw) offsets_.push_back(at);
       if (!problem.empty() && error_.empty()) error_ = problem;
       busy_ = false;
     }
@@ -186,11 +176,6 @@ void RecordWriter::work() {
 
 // Runs on the worker: compress, frame, write. Touches offset_ and the zstd context only here.
 std::string RecordWriter::write_job(Job& job) {
-  if (job.task) {
-    job.task();
-    job.task = nullptr;
-    return {};
-  }
   if (job.raw) {
     const std::string e = write_all(fd_, job.bytes.data(), job.bytes.size());
     offset_ += job.bytes.size();

@@ -62,10 +62,6 @@ class RecordWriter {
   // was built (so a builder may keep state from one call to the next: it runs in submission order).
   using Builder = std::function<FlatMessage()>;
   std::size_t submit_built(logfmt::RecordHeader header, Builder build);
-  // Queues work for the worker that makes no record (no sequence number): it runs after everything
-  // submitted before it and before everything after (the log writer codes a chunk's events in batches).
-  using Task = std::function<void()>;
-  void submit_task(Task task);
   // Called on the worker with the content of each built record once it is compressed, instead of freeing
   // it (the chunk coder reuses its block). Set before the first submit_built.
   using Recycler = std::function<void(FlatMessage&&)>;
@@ -87,7 +83,6 @@ class RecordWriter {
     std::vector<unsigned char> bytes;  // raw
     FlatMessage content;               // a record's
     Builder build;  // when set, makes `content` on the worker
-    Task task;      // when set, the whole job (no record)
   };
   void work();
   std::string write_job(Job& job);

@@ -109,8 +109,9 @@ Result<KeyframeData<T>> read_keyframe(const LogReader& log, const LogRecordRef& 
         for (std::size_t i = 0; i < n; ++i) k.last_collision[i] = scalar_from_bytes<T>(raw.data() + i * kScalarWidth<T>);
       }
       for (const std::uint64_t c : kf.getEngineCounts()) k.counts.push_back(c);
-      if (k.counts.size() != std::size_t(kCountedKindsV2 + 2) && k.counts.size() != std::size_t(kCountedKindsV2 + 3) &&
-          k.counts.size() != std::size_t(kCountedKindsV2 + 2 + kLaterKindsV3))
+      const std::size_t counted = k.counts.size();  // version 3: 10, or 11 with the thermostat (FORMAT.md)
+      if (counted != std::size_t(kCountedKindsV2 + 2) && counted != std::size_t(kCountedKindsV2 + 3) &&
+          counted != std::size_t(kCountedKindsV2 + 4) && counted != std::size_t(kCountedKindsV2 + 5))
         return Error{where + ": the engine counters are malformed"};
       k.next_sample = kf.getNextSample();
       k.next_action = kf.getNextAction();
@@ -322,7 +323,7 @@ template <class T>
 void Replay<T>::before_event(const DecodedEvent<T>& e, ReplayedEvent<T>& out) const {
   if (e.i < 0) return;
   out.vix0 = state_.vx_at(std::size_t(e.i), e.time), out.viy0 = state_.vy_at(std::size_t(e.i), e.time);
-  if (e.kind == EventKind::Pair)
+  if (e.kind == EventKind::Pair || e.kind == EventKind::Step)
     out.vjx0 = state_.vx_at(std::size_t(e.j), e.time), out.vjy0 = state_.vy_at(std::size_t(e.j), e.time);
   if (!state_.omega.empty()) {
     out.wi0 = state_.omega[std::size_t(e.i)];
@@ -348,7 +349,7 @@ void Replay<T>::after_event(const DecodedEvent<T>& e, ReplayedEvent<T>& out) con
     return;
   }
   out.xi = state_.x_at(std::size_t(e.i), e.time), out.yi = state_.y_at(std::size_t(e.i), e.time);
-  if (e.kind == EventKind::Pair)
+  if (e.kind == EventKind::Pair || e.kind == EventKind::Step)
     out.xj = state_.x_at(std::size_t(e.j), e.time), out.yj = state_.y_at(std::size_t(e.j), e.time);
 }
 
@@ -467,9 +468,12 @@ Result<StoredRebuildPoint<T>> Replay<T>::rebuild_point(std::size_t keyframe) con
   for (int c = 0; c < kCountedKindsV2; ++c) r.counts.by_kind[c] = kf.counts[std::size_t(c)];
   r.counts.stale = kf.counts[kCountedKindsV2];
   r.counts.tc_elastic = kf.counts[kCountedKindsV2 + 1];
-  for (std::size_t c = kCountedKindsV2 + 2; c < kf.counts.size(); ++c)  // kinds 6, 7, 8 (FORMAT.md)
-    if (kCountedKindsV2 + (c - (kCountedKindsV2 + 2)) < std::size_t(kEventKindCount))
-      r.counts.by_kind[kCountedKindsV2 + (c - (kCountedKindsV2 + 2))] = kf.counts[c];
+  if (kf.counts.size() > std::size_t(kCountedKindsV2 + 2))
+    r.counts.by_kind[int(EventKind::Segment)] = kf.counts[kCountedKindsV2 + 2];
+  if (kf.counts.size() > std::size_t(kCountedKindsV2 + 3))  // format version 3
+    r.counts.by_kind[int(EventKind::Step)] = kf.counts[kCountedKindsV2 + 3];
+  if (kf.counts.size() > std::size_t(kCountedKindsV2 + 4))  // format version 3, a run with the thermostat
+    r.counts.by_kind[int(EventKind::Thermostat)] = kf.counts[kCountedKindsV2 + 4];
   r.next_sample_index = kf.next_sample;
   r.next_action_index = kf.next_action;
   r.same_time_events = kf.same_time_events;

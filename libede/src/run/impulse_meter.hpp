@@ -25,7 +25,7 @@ class ImpulseMeter final : public Sink<T> {
   ImpulseMeter(bool periodic, double lx, double ly) : periodic_(periodic), lx_(lx), ly_(ly) {}
 
   void on_event(const EventOutcome<T>& e, const Particles<T>& p) override {
-    if (e.kind == EventKind::Pair) {
+    if (e.kind == EventKind::Pair || e.kind == EventKind::Step) {  // a step's impulse is a pair's too
       const std::size_t i = std::size_t(e.i), j = std::size_t(e.j);
       long double dx = (long double)p.disk[i].x - p.disk[j].x, dy = (long double)p.disk[i].y - p.disk[j].y;
       if (periodic_) {
@@ -34,7 +34,7 @@ class ImpulseMeter final : public Sink<T> {
       }
       const long double m = p.mass(i);
       virial_ += dx * m * ((long double)e.vix - e.vix0) + dy * m * ((long double)e.viy - e.viy0);
-      ++pairs_;
+      if (e.kind == EventKind::Pair) ++pairs_;
     } else if (e.kind == EventKind::Wall && e.j >= 0 && e.j < 4) {
       const bool vertical = e.j == kWallLeft || e.j == kWallRight;
       const long double m = p.mass(std::size_t(e.i));

@@ -1,6 +1,5 @@
 // start_run; see run_plan.hpp. Apart from plan_run (run_plan.cpp) because it instantiates every engine
 // (make_engine): whoever plans a run without starting one this way does not link them.
-#include "log/log_framing.hpp"
 #include "run/log_run_info.hpp"
 #include "run/run_plan.hpp"
 
@@ -26,7 +25,6 @@ Result<RunEngine<T>> start_run(RunPlan& plan, const RunLog& log, const Resumptio
   if (log.path.empty()) return run;
   if constexpr (kLogScalar<T>) {
     LogSettings settings = LogSettings::from(plan.scene.log);
-    if (uses_thermostat(plan.options)) settings.format_version = logfmt::kThermostatFormatVersion;
     if (resume) settings.format_version = resume->format_version;  // a resumed log continues as written
     settings.check_exactness = log.check_exactness;
     auto w = LogWriter<T>::create(log.path, log_run_info(plan.scene, plan.options, plan.initial.species_names),

@@ -51,6 +51,7 @@ RunSummary summarize(const EngineApi<T>& engine, double momentum_initial_x, doub
   s.sim_time = double(engine.time());
   s.energy_initial = engine.initial_kinetic_energy();
   s.energy_final = kinetic_energy(engine.particles(), engine.time());
+  s.potential_final = engine.potential_energy();
   s.momentum_initial[0] = momentum_initial_x;
   s.momentum_initial[1] = momentum_initial_y;
   momentum(engine.particles(), engine.time(), s.momentum_final[0], s.momentum_final[1]);
@@ -78,6 +79,7 @@ std::string to_text(const RunSummary& s) {
     << ", cell " << c.of(EventKind::Cell) << ", wrap " << c.of(EventKind::Wrap) << ", action "
     << c.of(EventKind::Action)
     << (c.of(EventKind::Segment) ? ", segment " + std::to_string(c.of(EventKind::Segment)) : std::string())
+    << (c.of(EventKind::Step) ? ", step " + std::to_string(c.of(EventKind::Step)) : std::string())
     << (c.of(EventKind::Thermostat) ? ", thermostat " + std::to_string(c.of(EventKind::Thermostat)) : std::string())
     << "); samples " << c.of(EventKind::Sample) << ", stale predictions " << c.stale
     << ", TC-elastic " << c.tc_elastic << "\n"
@@ -90,7 +92,11 @@ std::string to_text(const RunSummary& s) {
     << "speed            " << brief(s.events_per_second() / 1e6) << " M events/s, "
     << brief(s.collisions_per_second() / 1e6) << " M collisions/s\n"
     << "kinetic energy   " << brief(s.energy_initial) << " -> " << brief(s.energy_final) << " (ratio "
-    << brief(s.energy_initial > 0 ? s.energy_final / s.energy_initial : 0) << ")\n"
+    << brief(s.energy_initial > 0 ? s.energy_final / s.energy_initial : 0) << ")\n";
+  if (s.stepped)
+    o << "potential energy " << brief(s.potential_final) << " at the end (total " << brief(s.energy_final + s.potential_final)
+      << ")\n";
+  o
     << "momentum         (" << brief(s.momentum_initial[0]) << ", " << brief(s.momentum_initial[1])
     << ") -> (" << brief(s.momentum_final[0]) << ", " << brief(s.momentum_final[1]) << ")\n"
     << "memory           engine " << brief(double(s.engine_bytes) / 1048576) << " MiB ("
@@ -132,6 +138,7 @@ std::string to_json(const RunSummary& s) {
   j["collisions_per_second"] = s.collisions_per_second();
   j["energy_initial"] = s.energy_initial;
   j["energy_final"] = s.energy_final;
+  if (s.stepped) j["potential_final"] = s.potential_final;
   j["momentum_initial"] = Json::array({s.momentum_initial[0], s.momentum_initial[1]});
   j["momentum_final"] = Json::array({s.momentum_final[0], s.momentum_final[1]});
   j["engine_bytes"] = s.engine_bytes;

@@ -105,6 +105,7 @@ class SimulationOf final : public Simulation::Impl {
     s.wall_seconds = wall_seconds;
     s.setup_seconds = setup_seconds;
     s.setup_note = plan_.initial.note;
+    s.stepped = plan_.scene.physics.has_steps();
     s.events_before = events_before;
     s.collisions_before = collisions_before;
     return s;

@@ -24,9 +24,10 @@ constexpr std::string_view kSegmentKeys[] = {"from", "to", "restitution"};
 constexpr std::string_view kPolygonKeys[] = {"points", "closed", "restitution"};
 constexpr std::string_view kBoxKeys[] = {"size", "boundary"};
 constexpr std::string_view kPhysicsKeys[] = {"restitution", "wall_restitution", "tc", "gravity", "pairs",
-                                             "roughness",   "wall_roughness"};
+                                             "roughness",   "wall_roughness",   "steps"};
 constexpr std::string_view kWallRestitutionKeys[] = {"left", "right", "bottom", "top"};
 constexpr std::string_view kPairKeys[] = {"species", "restitution", "roughness"};
+constexpr std::string_view kStepKeys[] = {"species", "radius", "energy"};
 constexpr std::string_view kEngineKeys[] = {"scalar", "rebuild_interval"};
 constexpr std::string_view kLogKeys[] = {"keyframe_interval", "chunk_events", "compression_level"};
 constexpr std::string_view kSpeciesKeys[] = {"name",    "count",     "radius",  "mass",
@@ -52,6 +53,7 @@ const Section box{"[box]", kBoxKeys};
 const Section physics{"[physics]", kPhysicsKeys};
 const Section wall_restitution{"physics.wall_restitution = { left, right, bottom, top }", kWallRestitutionKeys};
 const Section pair{"[[physics.pairs]]", kPairKeys};
+const Section steps{"[[physics.steps]]", kStepKeys};
 const Section engine{"[engine]", kEngineKeys};
 const Section log{"[log]", kLogKeys};
 const Section species{"[[species]]", kSpeciesKeys};
@@ -73,7 +75,7 @@ const Section species_thermostat{"[species.thermostat]", kSpeciesThermostatKeys}
 namespace {
 
 const Section* const kAllSections[] = {&sections::root,      &sections::box,      &sections::physics,
-                                       &sections::wall_restitution, &sections::pair,
+                                       &sections::wall_restitution, &sections::pair, &sections::steps,
                                        &sections::engine,    &sections::log,      &sections::species,
                                        &sections::radius,
                                        &sections::placement, &sections::velocity, &sections::grow, &sections::stop,
@@ -206,7 +208,7 @@ const Section* section_for(std::string_view key) {  // the section of the table 
   static const std::pair<std::string_view, const Section*> kTables[] = {
       {"box", &sections::box},           {"physics", &sections::physics}, {"engine", &sections::engine},
       {"log", &sections::log},           {"wall_restitution", &sections::wall_restitution},
-      {"pairs", &sections::pair},
+      {"pairs", &sections::pair},        {"steps", &sections::steps},
       {"species", &sections::species},   {"radius", &sections::radius},   {"placement", &sections::placement},
       {"velocity", &sections::velocity}, {"grow", &sections::grow},     {"stop", &sections::stop},       {"sampling", &sections::sampling},
       {"actions", &sections::action},    {"start", &sections::start},     {"thermostat", &sections::thermostat}};

@@ -61,7 +61,7 @@ struct Section {
 };
 
 namespace sections {
-extern const Section root, box, physics, wall_restitution, pair, engine, log, species, radius, placement, velocity,
+extern const Section root, box, physics, wall_restitution, pair, steps, engine, log, species, radius, placement, velocity,
     grow, stop, sampling, action, start, walls, segment, polygon, thermostat, species_thermostat;
 }
 

@@ -89,6 +89,53 @@ PairRestitution read_pair(const toml::node& node, std::size_t i, const Reader& p
           value.value_or(default_xi), beta};
 }
 
+// [[physics.steps]] species = ["a", "a"] (or absent: every pair of species without an entry of its own),
+// radius = [0.015, ...] increasing, energy = [-1.0, ...] one per radius, finite and not 0.
+PairSteps read_steps(const toml::node& node, std::size_t i, const Reader& p) {
+  const std::string path = "physics.steps[" + std::to_string(i) + "]";
+  const toml::table* table = node.as_table();
+  if (!table) p.fail_node(&node, path, "expected a table", "write each stepped potential as a [[physics.steps]] table");
+  const Reader r(*table, path, p.origin());
+  r.check_keys(sections::steps);
+  PairSteps out;
+  if (r.has("species")) {
+    const toml::array* names = r.array("species");
+    if (!names || names->size() != 2 || !names->get(0)->is_string() || !names->get(1)->is_string())
+      r.fail("species", "expected two species names", "write species = [\"gas\", \"gas\"], or leave it out for every pair");
+    out.a = names->get(0)->value<std::string>().value_or("");
+    out.b = names->get(1)->value<std::string>().value_or("");
+  }
+  const toml::array* radii = r.array("radius");
+  const toml::array* energies = r.array("energy");
+  if (!radii || radii->empty())
+    missing(r, "radius", "a stepped potential needs the distances of its steps", "radius = [0.015]");
+  if (!energies || energies->size() != radii->size())
+    r.fail(energies ? "energy" : "radius",
+           "needs one energy per radius (" + std::to_string(radii->size()) + " radii, " +
+               std::to_string(energies ? energies->size() : 0) + " energies)",
+           "write energy = [...] with one value per radius: the energy change on entering that step");
+  out.radius = *r.numbers("radius", radii->size(), "[r1, r2, ...]", Bounds::positive());
+  out.energy = *r.numbers("energy", radii->size(), "[e1, e2, ...]", Bounds::any());
+  for (std::size_t k = 0; k < out.radius.size(); ++k) {
+    if (k > 0 && !(out.radius[k] > out.radius[k - 1]))
+      r.fail_item("radius", k,
+                  "the step radii must increase: " + number_text(out.radius[k]) + " follows " +
+                      number_text(out.radius[k - 1]),
+                  "list the radii from the innermost step outwards, each larger than the one before");
+    if (out.energy[k] == 0)
+      r.fail_item("energy", k, "a step of energy 0 changes nothing", "remove that step, or give it a non-zero energy");
+  }
+  return out;
+}
+
+// Steps between two species (empty names: the default for every pair), at most one entry per pair.
+std::string steps_pair_text(const PairSteps& st) {
+  return st.a.empty() ? std::string("every pair (no species given)") : "[\"" + st.a + "\", \"" + st.b + "\"]";
+}
+bool same_steps_pair(const PairSteps& x, const PairSteps& y) {
+  return (x.a == y.a && x.b == y.b) || (x.a == y.b && x.b == y.a);
+}
+
 PhysicsSpec read_physics(const Reader& top) {
   const Reader p = top.section("physics");
   p.check_keys(sections::physics);
@@ -111,6 +158,17 @@ PhysicsSpec read_physics(const Reader& top) {
                       "keep one [[physics.pairs]] entry per pair of species");
       }
       out.pairs.push_back(pair);
+    }
+  if (const toml::array* list = p.array("steps"))
+    for (std::size_t i = 0; i < list->size(); ++i) {
+      PairSteps st = read_steps(*list->get(i), i, p);
+      for (std::size_t k = 0; k < out.steps.size(); ++k)
+        if (same_steps_pair(out.steps[k], st))
+          p.fail_item("steps", i,
+                      "the steps of " + steps_pair_text(st) + " were already given by physics.steps[" +
+                          std::to_string(k) + "]; one would silently override the other",
+                      "keep one [[physics.steps]] entry per pair of species");
+      out.steps.push_back(std::move(st));
     }
   return out;
 }
@@ -676,6 +734,48 @@ void check_thermostat(const Reader& top, const Scene& scene) {
   if (scene.physics.has_gravity()) refuse("gravity");
   if (!scene.physics.segments.empty()) refuse("wall segments");
   if (scene.rotates()) refuse("rough or spinning disks");
+  // The stepped engines have no thermostat clock and the thermostat engines no step table; combining the two
+  // axes would double the engine table's thermostat rows for a case no issue asks for yet.
+  if (scene.physics.has_steps()) refuse("square wells or shoulders ([[physics.steps]])");
+}
+
+// [[physics.steps]]: real species, steps outside the hard core of the pair they act on, and not with the
+// effects the stepped engines do not have (rough disks, wall segments).
+void check_steps(const Reader& p, const Scene& scene) {
+  const PhysicsSpec& ph = scene.physics;
+  if (!ph.has_steps()) return;
+  if (scene.rotates())
+    p.fail("steps", "square wells and shoulders with rough or spinning disks are not supported yet",
+           "make the disks smooth (physics.roughness = -1, no species omega), or remove [[physics.steps]]");
+  if (!ph.segments.empty())
+    p.fail("steps", "square wells and shoulders with wall segments are not supported yet",
+           "remove the [walls] segments, or remove [[physics.steps]]");
+  if (scene.start) return;  // the species come from the start state: the engine checks the radii
+  const auto species = [&](const std::string& name) -> const SpeciesSpec* {
+    for (const SpeciesSpec& sp : scene.species)
+      if (sp.name == name) return &sp;
+    return nullptr;
+  };
+  std::string known;
+  for (const SpeciesSpec& sp : scene.species) known += (known.empty() ? "" : ", ") + sp.name;
+  for (std::size_t i = 0; i < ph.steps.size(); ++i) {
+    const PairSteps& st = ph.steps[i];
+    for (const std::string& name : {st.a, st.b})
+      if (!st.a.empty() && !species(name))
+        p.fail_item("steps", i, "there is no species '" + name + "'", "use the names of the species: " + known);
+    double contact = 0;  // the largest contact distance of the pairs these steps act on
+    for (const SpeciesSpec& x : scene.species)
+      for (const SpeciesSpec& y : scene.species) {
+        const bool named = (x.name == st.a && y.name == st.b) || (x.name == st.b && y.name == st.a);
+        if ((st.a.empty() || named) && !x.radius.from_packing && !y.radius.from_packing)
+          contact = std::max(contact, x.radius.max + y.radius.max);
+      }
+    if (!(st.radius.front() > contact))
+      p.fail_item("steps", i,
+                  "the innermost step (radius " + number_text(st.radius.front()) +
+                      ") lies inside the hard core: the disks touch at a distance of " + number_text(contact),
+                  "give step radii larger than the sum of the two species' radii (distances between centres)");
+  }
 }
 
 // Rules that span tables: pair restitution names real species; gravity needs walls (in a periodic box
@@ -684,6 +784,7 @@ void check_physics(const Reader& top, const Scene& scene) {
   const Reader p = top.section("physics");
   for (const PairRestitution& pair : scene.start ? std::vector<PairRestitution>{} : scene.physics.pairs)
     for (const std::string& name : {pair.a, pair.b}) check_species_named(p, "pairs", name, scene);
+  check_steps(p, scene);
   if (scene.physics.has_gravity() && scene.boundary == BoundaryKind::Periodic)
     p.fail("gravity", "gravity needs walls: in a periodic box every disk would fall forever",
            "use box.boundary = \"walls\", or remove gravity");
