@@ -55,6 +55,7 @@ void print_events(const Log& log, std::string& problem) {
                      std::to_string(c.of(EventKind::Wall)) + ", wrap " + std::to_string(c.of(EventKind::Wrap)) +
                      ", action " + std::to_string(c.of(EventKind::Action)) +
                      (c.of(EventKind::Segment) ? ", segment " + std::to_string(c.of(EventKind::Segment)) : "") +
+                     (c.of(EventKind::Step) ? ", step " + std::to_string(c.of(EventKind::Step)) : "") +
                      (c.of(EventKind::Thermostat) ? ", thermostat " + std::to_string(c.of(EventKind::Thermostat)) : ""));
 }
 

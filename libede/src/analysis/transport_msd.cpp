@@ -98,6 +98,7 @@ Result<MeanSquareDisplacement> mean_square_displacement(const Log& log, const Tr
     measure_until(e.time);
     switch (e.kind) {
       case EventKind::Pair:
+      case EventKind::Step:  // a step changes both velocities, like a collision
         moved(e.i, e.time, e.xi, e.yi, e.vix, e.viy);
         moved(e.j, e.time, e.xj, e.yj, e.vjx, e.vjy);
         break;

@@ -107,6 +107,7 @@ Result<VelocityAutocorrelation> velocity_autocorrelation(const Log& log, const T
   Status walked = transport::for_each_window_event(log, w, false, [&](const transport::StreamEvent& e) {
     switch (e.kind) {
       case EventKind::Pair:
+      case EventKind::Step:  // a step changes both velocities, like a collision
         change(e.i, e.time, e.vix, e.viy);
         change(e.j, e.time, e.vjx, e.vjy);
         break;
