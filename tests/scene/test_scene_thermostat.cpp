@@ -79,4 +79,11 @@ TEST_CASE("scene thermostat: bad keys are errors with file, line, key and fix", 
              Contains("not supported yet"));
   CHECK_THAT(error_of(with_top("[physics]\nroughness = 0.5\n[thermostat]\ntemperature = 1.0\nrate = 1.0")),
              Contains("not supported yet"));
+  // Steps and a thermostat: no engine has both (engine_factory.hpp), refused whichever table names it.
+  const std::string steps = "[[physics.steps]]\nradius = [0.06]\nenergy = [-0.5]\n";
+  CHECK(load(with_top(steps)).physics.has_steps());
+  CHECK_THAT(error_of(with_top(steps + "[thermostat]\ntemperature = 1.0\nrate = 1.0")),
+             Contains("the thermostat with square wells or shoulders") && Contains("not supported yet"));
+  CHECK_THAT(error_of(with_dust("[species.thermostat]\ntemperature = 1.0\nrate = 1.0") + steps),
+             Contains("a species' thermostat with square wells or shoulders"));
 }
