@@ -78,9 +78,9 @@ class CellGrid {
     d.cell = d.next_in_cell = kNone;
   }
 
-  // Inlined into cross_cell on purpose: with the stepped engines the library calls it from eleven engines
-  // per scalar type, and GCC then kept it out of line, 1 % more instructions for the hard-disk gas
-  // (callgrind, ede-sim examples/gas.toml, 3*10^5 events).
+  // Inlined into cross_cell on purpose: the library calls it from many engines per scalar type (thirteen
+  // with the stepped and thermostat engines), and GCC then kept it out of line, 1 % more instructions for
+  // the hard-disk gas (callgrind, ede-sim examples/gas.toml, 3*10^5 events).
   [[gnu::always_inline]] void move(std::int32_t disk, std::int32_t cell) {
     remove(disk);
     insert(disk, cell);

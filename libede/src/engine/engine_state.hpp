@@ -179,6 +179,17 @@ struct EngineState {
 // crossing, into its Prediction and the queue. Declared here for the rooms that re-predict after an event.
 template <class S>
 void predict_disk(S& s, std::int32_t i);
+// From disk a's stored position to disk b's, through the nearest periodic image (both brought to the same
+// time by the caller): what a pair or step collision resolves along.
+template <class S, class T = typename S::Scalar>
+[[gnu::always_inline]] inline void separation(const S& s, const Disk<T>& a, const Disk<T>& b, T& dx, T& dy) {
+  dx = b.x - a.x, dy = b.y - a.y;
+  if constexpr (S::Effects::kPeriodic) {
+    if (dx > s.half_lx) dx -= s.lx; else if (dx < -s.half_lx) dx += s.lx;
+    if (dy > s.half_ly) dy -= s.ly; else if (dy < -s.half_ly) dy += s.ly;
+  }
+}
+
 // Every disk's prediction rebuilt from the state alone (predict_disk.hpp); `notify`: the sinks see the point.
 template <class S>
 void rebuild_predictions(S& s, bool notify = true);

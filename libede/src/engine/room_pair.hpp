@@ -184,11 +184,8 @@ void resolve_pair(S& s, std::int32_t i, std::int32_t j, bool time_exact_v2) {
   Disk<T>& a = s.p.disk[i];
   Disk<T>& b = s.p.disk[j];
   const T vix0 = a.vx, viy0 = a.vy, vjx0 = b.vx, vjy0 = b.vy;
-  T dx = b.x - a.x, dy = b.y - a.y;
-  if constexpr (Fx::kPeriodic) {
-    if (dx > s.half_lx) dx -= s.lx; else if (dx < -s.half_lx) dx += s.lx;
-    if (dy > s.half_ly) dy -= s.ly; else if (dy < -s.half_ly) dy += s.ly;
-  }
+  T dx, dy;
+  separation(s, a, b, dx, dy);
   const bool by_tc = s.tc_elastic(i, j);
   if constexpr (Fx::kDissipative) {
     auto& d = s.dissipation;

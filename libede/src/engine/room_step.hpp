@@ -124,11 +124,8 @@ void resolve_step(S& s, std::int32_t i, std::int32_t j) {
   Disk<T>& a = s.p.disk[i];
   Disk<T>& b = s.p.disk[j];
   const T vix0 = a.vx, viy0 = a.vy, vjx0 = b.vx, vjy0 = b.vy;
-  T dx = b.x - a.x, dy = b.y - a.y;
-  if constexpr (Fx::kPeriodic) {
-    if (dx > s.half_lx) dx -= s.lx; else if (dx < -s.half_lx) dx += s.lx;
-    if (dy > s.half_ly) dy -= s.ly; else if (dy < -s.half_ly) dy += s.ly;
-  }
+  T dx, dy;
+  separation(s, a, b, dx, dy);
   const auto range = table.steps_of(s.p, i, j);
   const std::int32_t depth = table.depth(i, j);
   const T d2 = dx * dx + dy * dy;
