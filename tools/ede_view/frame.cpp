@@ -66,8 +66,9 @@ std::uint16_t fixed16(double v, double scale) {
 
 }  // namespace
 
-Reference make_reference(const State& initial) {
+Reference make_reference(const State& initial, const std::vector<PairSteps>& steps) {
   Reference r;
+  r.bonds = bond_radii(steps, initial.species_names);
   r.x0 = initial.x.to_doubles();
   r.y0 = initial.y.to_doubles();
   const GasSnapshot g = snapshot(initial);
@@ -94,9 +95,16 @@ Result<FrameRequest> frame_request(std::size_t max_disks, const std::string& exa
     r.colour = Colouring::Species;
   else if (colour == "displacement")
     r.colour = Colouring::Displacement;
+  else if (colour == "clusters")
+    r.colour = Colouring::Clusters;
   else if (!(colour.empty() || colour == "speed"))
-    return Error{"parameter 'colour' must be speed, species or displacement, not '" + colour.substr(0, 40) + "'"};
+    return Error{"parameter 'colour' must be speed, species, displacement or clusters, not '" + colour.substr(0, 40) +
+                 "'"};
   return r;
+}
+
+std::string colouring_refused(const FrameRequest& request, const Reference& ref) {
+  return request.colour == Colouring::Clusters ? clusters_unavailable(ref.bonds) : "";
 }
 
 FrameStatistics frame_statistics(const State& s, const Reference& ref) {
@@ -147,6 +155,9 @@ std::string pack_frame(const State& s, const Reference& ref, const FrameExtras& 
       disp_max = std::max(disp_max, disp[i]);
     }
   }
+  // Every disk's cluster (bonds to disks not sent count too).
+  Clusters clusters;
+  if (request.colour == Colouring::Clusters) clusters = find_clusters(s, ref.bonds);
   double rmin = 0, rmax = 0;
   with_values(s.radius, [&](const auto& r) {
     for (std::size_t i = 0; i < n; i += stride) {
@@ -159,7 +170,7 @@ std::string pack_frame(const State& s, const Reference& ref, const FrameExtras& 
   nlohmann::json columns = nlohmann::json::array({{"x", position_type}, {"y", position_type}});
   if (radius_column) columns.push_back({"r", position_type});
   columns.push_back({"colour", "u8"});
-  const char* colour_names[] = {"speed class", "species", "displacement"};
+  const char* colour_names[] = {"speed class", "species", "displacement", "clusters"};
   nlohmann::json j = {{"time", double(s.time)},
                       {"events", s.events},
                       {"disks", n},
@@ -173,6 +184,9 @@ std::string pack_frame(const State& s, const Reference& ref, const FrameExtras& 
                       {"packing", request.exact ? "exact" : "compact"},
                       {"columns", columns},
                       {"colour", {{"by", colour_names[int(request.colour)]}, {"displacement_max", disp_max}}}};
+  if (request.colour == Colouring::Clusters)
+    j["colour"].update({{"clusters", clusters.count}, {"largest", clusters.largest}, {"alone", clusters.alone},
+                        {"bond_radius", ref.bonds.largest}});
   if (!radius_column) j["radius"] = rmax;
   if (!request.exact) j["scale"] = {s.lx / 65535.0, s.ly / 65535.0, rmax / 65535.0};
   std::string json = j.dump();
@@ -219,6 +233,12 @@ std::string pack_frame(const State& s, const Reference& ref, const FrameExtras& 
     case Colouring::Displacement:
       append_column<std::uint8_t>(out, n, stride, [&](std::size_t i) {
         return disp_max > 0 ? std::uint8_t(std::nearbyint(255 * disp[i] / disp_max)) : std::uint8_t(0);
+      });
+      break;
+    case Colouring::Clusters:
+      append_column<std::uint8_t>(out, n, stride, [&](std::size_t i) {
+        const std::uint32_t r = clusters.rank[i];
+        return r == 0 ? std::uint8_t(0) : std::uint8_t(1 + (r - 1) % 255);
       });
       break;
   }

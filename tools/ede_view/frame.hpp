@@ -9,7 +9,9 @@
 //   (q = round(65535 x / lx): 1/65535 of the box, a hundredth of a pixel on the page), the radius as u16
 //   of the largest radius only when the disks' radii differ (else one number in the JSON), and one u8 per
 //   disk for the colouring the page asked for (?colour=): the speed class (0 slow, 1 medium, 2 fast), the
-//   species index (mod 256), or the displacement in 255ths of the largest one sent.
+//   species index (mod 256), the displacement in 255ths of the largest one sent, or the bonded cluster
+//   (0 alone, else 1 + (rank - 1) mod 255, rank 1 the largest: clusters.hpp), with the cluster count, the
+//   largest cluster's size and the disks alone in the JSON.
 // - exact (?exact=1): x, y and radius as float64, exactly the State's numbers (float and double runs;
 //   long double runs rounded to double), and the same colour byte: what the tests compare with
 //   `ede-replay --at`.
@@ -25,17 +27,20 @@
 #include <string>
 #include <vector>
 
+#include "clusters.hpp"
 #include "ede/state.hpp"
 
 namespace ede::view {
 
 // What a frame compares against: the state its displacement is measured from and the initial averages
-// GasLab's monitors show (speed classes are against the initial mean speed).
+// GasLab's monitors show (speed classes are against the initial mean speed); and what bonds disks into
+// clusters, from the scene's steps.
 struct Reference {
   std::vector<double> x0, y0;
   double mean_speed0 = 0, kT0 = 0;
+  BondRadii bonds;
 };
-Reference make_reference(const State& initial);
+Reference make_reference(const State& initial, const std::vector<PairSteps>& steps);
 
 // Extra monitors the caller knows (a live run's events per second, a log's path); added to the JSON as is.
 struct FrameExtras {
@@ -43,7 +48,7 @@ struct FrameExtras {
   double collisions = 0;    // pair collisions up to this state (for collisions per disk)
 };
 
-enum class Colouring : std::uint8_t { Speed, Species, Displacement };
+enum class Colouring : std::uint8_t { Speed, Species, Displacement, Clusters };
 
 // What the page asks for (?max=, ?exact=, ?colour=).
 struct FrameRequest {
@@ -52,9 +57,11 @@ struct FrameRequest {
   Colouring colour = Colouring::Speed;
   bool operator==(const FrameRequest&) const = default;
 };
-// The request's packing from its query values ("speed", "species", "displacement"; "0"/"1"), or the
-// message naming the bad value.
+// The request's packing from its query values ("speed", "species", "displacement", "clusters"; "0"/"1"),
+// or the message naming the bad value.
 Result<FrameRequest> frame_request(std::size_t max_disks, const std::string& exact, const std::string& colour);
+// Why frames of this reference cannot be packed as asked ("" when they can): clusters without a well.
+std::string colouring_refused(const FrameRequest& request, const Reference& ref);
 
 // The monitors and histograms over every disk (the frame's costly part: several passes and copies of
 // every velocity), as JSON fields, with the speed the classes are measured against.

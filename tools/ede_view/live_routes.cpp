@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "clusters.hpp"
 #include "ede/ede.hpp"
 
 namespace ede::view {
@@ -13,7 +14,8 @@ namespace {
 nlohmann::json scene_json(const std::string& name, const Scene& s) {
   const SpeciesSpec* sp = s.species.empty() ? nullptr : &s.species.front();
   std::uint64_t disks = 0;
-  for (const SpeciesSpec& x : s.species) disks += std::uint64_t(x.count);
+  std::vector<std::string> names;
+  for (const SpeciesSpec& x : s.species) disks += std::uint64_t(x.count), names.push_back(x.name);
   return {{"name", name},
           {"disks", disks},
           {"species", s.species.size()},
@@ -24,6 +26,7 @@ nlohmann::json scene_json(const std::string& name, const Scene& s) {
           {"tc", s.physics.tc},
           {"gravity", s.physics.gravity},
           {"boundary", to_string(s.boundary)},
+          {"clusters_unavailable", clusters_unavailable(bond_radii(s.physics.steps, names))},
           {"box", {s.lx, s.ly}}};
 }
 
@@ -102,6 +105,8 @@ void add_live_routes(httplib::Server& server, const std::vector<Root>& roots, Li
   server.Get("/api/run/frame", [&runs, &budget](const httplib::Request& req, httplib::Response& res) {
     const auto request = frame_request_param(req, res, 200000);
     if (!request) return;
+    if (const std::string why = runs.refused(*request); !why.empty())
+      return send_error(res, 400, "parameter 'colour': " + why);
     auto frame = runs.frame(*request);
     if (!frame) return send_error(res, 404, "no run: press SETUP first");
     send_frame(res, std::move(frame), budget);

@@ -81,7 +81,7 @@ Result<std::string> LiveRuns::setup(const LiveSetup& setup) {
   auto run = std::make_shared<Run>();
   run->live = std::move(started).value();
   run->scene_label = setup.scene_label;
-  run->reference = make_reference(*run->live->status().state);
+  run->reference = make_reference(*run->live->status().state, run->live->scene().physics.steps);
   {
     std::lock_guard lock(mutex_);
     run_ = run;
@@ -102,6 +102,11 @@ Status LiveRuns::reverse() { return control(&LiveRun::reverse); }
 
 void LiveRuns::set_pace(double pace) {
   if (const auto run = current()) run->live->set_pace(pace);
+}
+
+std::string LiveRuns::refused(const FrameRequest& request) {
+  const auto run = current();
+  return run ? colouring_refused(request, run->reference) : "";
 }
 
 std::shared_ptr<const std::string> LiveRuns::frame(const FrameRequest& request) {
@@ -164,6 +169,7 @@ std::string LiveRuns::status_json() {
                         {"pace", s.pace},
                         {"reversals", s.reversals},
                         {"reversal_pairs", s.reversal_pairs},
+                        {"clusters_unavailable", clusters_unavailable(run->reference.bonds)},
                         {"message", s.message}}
       .dump();
 }

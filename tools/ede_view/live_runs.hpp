@@ -38,6 +38,8 @@ class LiveRuns {
   void set_pace(double sim_time_per_second);  // 0: as fast as the engine goes
   // The latest published state as a frame (frame.hpp); null before the first SETUP.
   std::shared_ptr<const std::string> frame(const FrameRequest& request);
+  // Why the current run's frames cannot be packed as asked (colouring_refused); "" when they can or there is no run.
+  std::string refused(const FrameRequest& request);
   std::string status_json();
 
   struct Run;  // a LiveRun with its label and its frame cache (live_runs.cpp)

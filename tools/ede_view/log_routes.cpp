@@ -26,6 +26,7 @@ struct OpenLog {
   std::optional<Reference> reference;
   std::optional<double> pair_share;
   std::optional<std::string> segments;  // segments_field of the log's scene
+  std::optional<std::vector<PairSteps>> steps;      // the log's scene's square wells and shoulders
   std::optional<std::optional<CraterBase>> crater;  // crater_base of the log, once looked for
   std::string crater_before_text;                   // the last ?before= asked for, and its base
   std::optional<CraterBase> crater_before;
@@ -67,6 +68,15 @@ class LogStore {
 const std::optional<CraterBase>& crater_of(OpenLog& entry) {
   if (!entry.crater) entry.crater = crater_base(*entry.log);
   return *entry.crater;
+}
+
+// The steps of the log's scene (none when its scene cannot be read), read once; the caller holds the mutex.
+const std::vector<PairSteps>& steps_of(OpenLog& entry) {
+  if (!entry.steps) {
+    auto scene = entry.log->scene();
+    entry.steps = scene ? scene.value().physics.steps : std::vector<PairSteps>{};
+  }
+  return *entry.steps;
 }
 
 nlohmann::json info_json(const std::string& name, const LogInfo& info) {
@@ -118,7 +128,10 @@ void add_log_routes(httplib::Server& server, const std::vector<Root>& roots, Fra
     auto entry = find_log(roots, *store, req, res);
     if (!entry) return;
     std::lock_guard lock(entry->mutex);
-    std::string json = info_json(req.get_param_value("name"), entry->log->info()).dump();
+    nlohmann::json info = info_json(req.get_param_value("name"), entry->log->info());
+    // Whether the page may colour by clusters: "" if so, else why not.
+    info["clusters_unavailable"] = clusters_unavailable(bond_radii(steps_of(*entry), entry->log->info().species_names));
+    std::string json = info.dump();
     json.pop_back();
     send_json(res, json + crater_info_field(crater_of(*entry)) + "}");
   });
@@ -143,8 +156,10 @@ void add_log_routes(httplib::Server& server, const std::vector<Root>& roots, Fra
     if (!entry->reference) {
       auto first = log.state_at_event(0);
       if (!first) return send_error(res, 422, first.error().message);
-      entry->reference = make_reference(first.value());
+      entry->reference = make_reference(first.value(), steps_of(*entry));
     }
+    if (const std::string why = colouring_refused(*request, *entry->reference); !why.empty())
+      return send_error(res, 400, "parameter 'colour': " + why);
     const State& s = state.value();
     FrameExtras extras;
     // Pair collisions up to t, estimated from the whole log's share of pair events among logged ones

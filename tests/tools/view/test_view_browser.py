@@ -112,6 +112,32 @@ def main():
               f"a crater log opens in the crater view (depth {depth:.3f} in the monitors, coloured by {colour})")
         if shots:
             open(os.path.join(shots, "view-log.png"), "wb").write(browser.screenshot())
+        # Bonded clusters: a square-well log may be coloured by them (the legend in the monitors, the groups
+        # the frame's ranks); a log without a well disables the option, says why, and falls back to speed.
+        make_log(os.path.join(server.logs, "wells.ede"), "examples/square-well.toml",
+                 sets=["stop.time=1", "species[0].velocity.temperature=1.5"])
+        browser.eval("edeView.openLog('0:wells.ede', '0.9')")
+        browser.wait("edeView.last.t_request === '0.9'", 20)
+        browser.eval("const c = document.getElementById('colour'); c.value = 'clusters';"
+                     " c.dispatchEvent(new Event('change'))")
+        browser.wait("edeView.last.info.colour.by === 'clusters'", 20)
+        time.sleep(0.3)
+        monitors = browser.eval("document.getElementById('monitors').textContent")
+        legend = browser.eval("edeView.last.info.colour")
+        check(f"{legend['clusters']}, largest {legend['largest']} disks" in monitors and legend["clusters"] >= 2,
+              f"clusters: the legend in the monitors ({legend['clusters']} clusters, the largest {legend['largest']})")
+        if shots:
+            open(os.path.join(shots, "view-clusters.png"), "wb").write(browser.screenshot())
+        browser.eval("edeView.openLog('0:gas.ede', '0.5')")
+        browser.wait("edeView.last.t_request === '0.5'", 20)
+        why = browser.eval("document.querySelector('#colour option[value=clusters]').title")
+        check(browser.eval("document.querySelector('#colour option[value=clusters]').disabled") and "square well" in why
+              and browser.eval("document.getElementById('colour').value") == "speed" and
+              browser.eval("edeView.last.info.colour.by") == "speed class",
+              f"a log without a well: the option is disabled, saying why ({why!r}), and the page colours by speed")
+        browser.eval("edeView.openLog('0:crater.ede', 'end')")
+        browser.wait("edeView.last.t_request === 'end' && edeView.last.info.crater", 20)
+
         # Playing the log backward from its end, then forward, at a chosen speed (simulated time per second).
         end = browser.eval("edeView.last.time")
         browser.eval(f"document.getElementById('play-speed').value = '{end / 4!r}'; document.getElementById('back').click()")

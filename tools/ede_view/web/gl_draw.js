@@ -24,7 +24,7 @@ function makeGlDisks(canvas) {
     in float x, y, r, group;
     uniform float scale, ly;
     uniform vec2 size;
-    uniform vec3 palette[9];
+    uniform vec3 palette[16];
     out vec3 colour;
     out float radius;
     void main() {
@@ -86,8 +86,8 @@ function makeGlDisks(canvas) {
       gl.uniform1f(uniforms.scale, scale);
       gl.uniform1f(uniforms.ly, f.info.ly);
       gl.uniform2f(uniforms.size, canvas.width, canvas.height);
-      const colours = new Float32Array(27);
-      palette.slice(0, 9).forEach((hex, k) => colours.set(rgb(hex), 3 * k));
+      const colours = new Float32Array(48);
+      palette.slice(0, 16).forEach((hex, k) => colours.set(rgb(hex), 3 * k));
       gl.uniform3fv(uniforms.palette, colours);
       gl.drawArrays(gl.POINTS, 0, f.n);
       return true;

@@ -78,12 +78,22 @@ function frameParams() { return 'colour=' + $('colour').value + (view.exact ? '&
 
 const SPECIES = ['#4fc3f7', '#ffb74d', '#81c784', '#e57373', '#ba68c8', '#fff176', '#a1887f', '#90a4ae'];
 const CLASSES = ['#2962ff', '#00c853', '#ff1744'];  // GasLab: slow blue, medium green, fast red
+// Bonded clusters (frame.hpp): grey for a disk alone, then 15 colours by the cluster's rank (1: the
+// largest), repeating; the same state always gets the same colours.
+const CLUSTERS = ['#5a5a5a', '#e6194b', '#3cb44b', '#ffe119', '#4363d8', '#f58231', '#911eb4', '#46f0f0', '#f032e6',
+  '#bcf60c', '#fabebe', '#008080', '#e6beff', '#9a6324', '#fffac8', '#aaffc3'];
 const RAMP = ['#313695', '#4575b4', '#74add1', '#abd9e9', '#fee090', '#fdae61', '#f46d43', '#d73027', '#a50026'];
 
 // The colour group of every disk (an index into the palette returned), from the frame's colour byte: the
-// speed class, the species, or the displacement in 255ths of the frame's largest (frame.hpp).
+// speed class, the species, the displacement in 255ths of the frame's largest, or the bonded cluster
+// (0 alone, else 1 + (rank - 1) mod 255: frame.hpp).
 function colourGroups(f) {
   const by = f.info.colour.by, c = f.colour;
+  if (by === 'clusters') {
+    const g = new Uint8Array(f.n), k = CLUSTERS.length - 1;
+    for (let i = 0; i < f.n; i++) g[i] = c[i] ? 1 + (c[i] - 1) % k : 0;
+    return { groups: g, palette: CLUSTERS };
+  }
   if (by === 'species') {
     const g = new Uint8Array(f.n);
     for (let i = 0; i < f.n; i++) g[i] = c[i] % SPECIES.length;
@@ -310,6 +320,11 @@ function monitors(f) {
     ...(view.pressure ? [['pressure, ' + view.pressure.formula + ' (Δt ' + view.pressure.dt.toPrecision(3) + ')',
       view.pressure.value.toPrecision(4) + ' (Z ' + view.pressure.z.toPrecision(4) + ')']] : []),
     ['disks drawn', f.n.toLocaleString('en') + (i.stride > 1 ? ' (every ' + i.stride + 'th of ' + i.disks.toLocaleString('en') + ')' : '')]);
+  if (i.colour.by === 'clusters') {  // the legend: bonded when closer than the outermost well
+    const c = i.colour;
+    rows.push(['clusters (bonded: r < ' + c.bond_radius.toPrecision(3) + ')', c.clusters.toLocaleString('en') +
+      ', largest ' + c.largest.toLocaleString('en') + ' disks, ' + c.alone.toLocaleString('en') + ' alone (grey)']);
+  }
   if (i.crater && i.crater.error) rows.push(['crater', i.crater.error]);
   else if (i.crater) {
     const c = i.crater;
@@ -368,8 +383,19 @@ async function sendPace() {
   try { await api('/api/run/pace?pace=' + paceValue(), { method: 'POST' }); } catch (e) { /* no run yet */ }
 }
 
+// The clusters colouring only where the scene has a square well: otherwise disabled, with the reason as
+// its tooltip, and the speed classes instead if it was chosen. Why not, per mode (the live scene, the log).
+const clustersWhy = { live: '', log: '' };
+function offerClusters(unavailable) {
+  const option = $('colour').querySelector('option[value=clusters]');
+  option.disabled = !!unavailable;
+  option.title = unavailable || 'disks bonded (closer than their outermost square well) share a colour';
+  if (unavailable && $('colour').value === 'clusters') $('colour').value = 'speed';
+}
+
 async function loadScene() {
   const s = await (await api('/api/scene?name=' + encodeURIComponent($('scene').value))).json();
+  offerClusters(clustersWhy.live = s.clusters_unavailable);
   $('count').value = s.count;
   $('radius').value = s.radius ?? '';
   $('radius').placeholder = s.radius === null ? 'from the scene' : '';
@@ -391,8 +417,9 @@ async function setup() {
   if (changed('gravity', -scene.gravity[1])) set.push('physics.gravity=[0,' + (-Number($('gravity').value)) + ']');
   if ($('boundary').value !== scene.boundary) set.push('box.boundary="' + $('boundary').value + '"');
   try {
-    await api('/api/run/setup', { method: 'POST', headers: { 'Content-Type': 'application/json' },
-      body: JSON.stringify({ scene: $('scene').value, set, until: Number($('until').value) || 100 }) });
+    const status = await (await api('/api/run/setup', { method: 'POST', headers: { 'Content-Type': 'application/json' },
+      body: JSON.stringify({ scene: $('scene').value, set, until: Number($('until').value) || 100 }) })).json();
+    offerClusters(clustersWhy.live = status.clusters_unavailable);
     liveRunning = false;
     $('go').textContent = 'GO';
     $('go').disabled = $('reverse').disabled = $('finish').disabled = false;
@@ -433,6 +460,7 @@ async function openLog() {
     // A crater scene (a bed and a projectile): the crater view on, coloured by displacement.
     $('crater-view').hidden = $('crater-before-label').hidden = !logInfo.crater;
     $('crater').checked = !!logInfo.crater;
+    offerClusters(clustersWhy.log = logInfo.clusters_unavailable);
     if (logInfo.crater) $('colour').value = 'displacement';
     play = 0;
     setLogTime(logInfo.start);
@@ -514,6 +542,7 @@ async function init() {
     view.mode = r.value;
     $('live').hidden = view.mode !== 'live';
     $('logs').hidden = view.mode !== 'log';
+    offerClusters(clustersWhy[view.mode]);
     if (view.mode === 'log') refreshLogs(); else liveDirty = true;
   }));
   $('colour').addEventListener('change', () => { liveDirty = true; logShown = null; });
