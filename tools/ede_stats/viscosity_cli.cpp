@@ -45,19 +45,22 @@ int run_viscosity(const ViscosityCli& c) {
   s.add("mean P_xy", brief(r.mean_shear_stress) + " ± " + brief(r.mean_shear_stress_error, 2) +
                          "; mean (P_xx - P_yy)/2 " + brief(r.mean_normal_stress) + " ± " +
                          brief(r.mean_normal_stress_error, 2) + " (0 in equilibrium)");
-  s.add("eta (Helfand)", brief(r.eta.back()) + " ± " + brief(r.error.back(), 2) + " at lag " + brief(r.lag.back()) +
+  s.add("eta", brief(r.viscosity) + " ± " + brief(r.viscosity_error, 2) + " (the Helfand moment's slope over lags " +
+                   brief(r.lag[(r.lag.size() - 1) / 2]) + " to " + brief(r.lag.back()) + ")");
+  s.add("eta(t) (Helfand)", brief(r.eta.back()) + " ± " + brief(r.error.back(), 2) + " at lag " + brief(r.lag.back()) +
                              " (P_xy: " + brief(r.eta_xy.back()) + ", (P_xx - P_yy)/2: " + brief(r.eta_normal.back()) + ")");
   s.add("eta (Green-Kubo)", brief(r.green_kubo.back()) + " ± " + brief(r.green_kubo_error.back(), 2) + " at lag " +
                                 brief(r.lag.back()));
   if (r.enskog == r.enskog)
     s.add("Enskog eta_E", brief(r.enskog) + " (phi " + brief(r.packing_fraction, 4) + ", g(sigma) " +
                               brief(r.g_contact, 5) + "; dilute eta_0 " + brief(r.dilute) + "; eta / eta_E = " +
-                              brief(r.eta.back() / r.enskog, 4) + ")");
+                              brief(r.viscosity / r.enskog, 4) + ")");
   else
     s.add("Enskog eta_E", r.enskog_note);
   if (block_length < 2 * r.lag.back())
     s.add("warning", "a block of origins spans " + brief(block_length) + ", under twice the largest lag: the "
                      "blocks are correlated and the error is too small (use fewer --blocks or a longer window)");
+  s.number("viscosity", r.viscosity), s.number("viscosity_error", r.viscosity_error);
   s.number("eta", r.eta.back()), s.number("eta_error", r.error.back()), s.number("green_kubo", r.green_kubo.back());
   s.number("green_kubo_error", r.green_kubo_error.back()), s.number("kT", r.kT), s.number("pressure", r.pressure);
   s.number("enskog", r.enskog), s.number("dilute", r.dilute), s.number("packing_fraction", r.packing_fraction);

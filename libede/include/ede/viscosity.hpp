@@ -61,6 +61,10 @@ struct ShearViscosity {
   std::vector<double> eta_xy, eta_normal;  // each component: symmetrised P_xy, and (P_xx - P_yy) / 2
   std::vector<double> acf;               // (V / kT) <P(0) P(t)> of the bin-averaged stress, both components
   std::vector<double> green_kubo, green_kubo_error;  // its running integral, trapezoidal on the bin grid
+  // The estimate: the least-squares slope of the Helfand moment <dG^2> over the last half of the lags,
+  // divided by 2 V kT (eta(t) itself approaches it only as 1/t: eta(t) = eta - (integral of t C(t)) / t);
+  // error: the standard error of the blocks' slopes.
+  double viscosity = 0, viscosity_error = 0;
   std::size_t disks = 0, bins = 0, origins = 0, blocks = 0;
   double bin_width = 0, area = 0;
   double kT = 0;        // the window's time average of K' / (N - 1) (centre-of-mass frame)

@@ -3,6 +3,8 @@
 // G_k = W_0 + ... + W_(k-1), the moment's increment over lag l dt from origin s is G_(s+l) - G_s, exact;
 //   eta(l dt) = < (G_(s+l) - G_s)^2 >_s / (2 V kT l dt)
 // over the origins s = 0 .. S - L - 1 (S bins, L the largest lag in bins; the same origins at every lag).
+// eta(t) tends to eta only as 1/t (the moment is 2 V kT (eta t - integral of t C)), so the estimate is the
+// moment's least-squares slope over the last half of the lags, / (2 V kT), like D from the MSD's slope.
 // The Green-Kubo integral of the bin-averaged stress, C_m = <W_s W_(s+m)>_s:
 //   eta_GK(l dt) = (C_0 / 2 + C_1 + ... + C_(l-1) + C_l / 2) / (V kT dt),
 // which is the Helfand moment's slope ((H_(l+1) - H_(l-1)) / 2 = C_0 + 2 (C_1 + ... + C_(l-1)) + C_l for a
@@ -68,6 +70,18 @@ BlockStatistic pooled(const std::vector<long double>& sums, const std::vector<st
     means[b] = double(sums[b] / (long double)count[b]);
   }
   return {double(total / (long double)n), transport::standard_error(means)};
+}
+
+// The least-squares slope of y against x over the points k0 .. end (through the origin when one point).
+double slope(const std::vector<double>& x, const std::vector<double>& y, std::size_t k0) {
+  const std::size_t n = x.size() - k0;
+  if (n == 1) return y[k0] / x[k0];
+  double mx = 0, my = 0;
+  for (std::size_t k = k0; k < x.size(); ++k) mx += x[k], my += y[k];
+  mx /= double(n), my /= double(n);
+  double sxy = 0, sxx = 0;
+  for (std::size_t k = k0; k < x.size(); ++k) sxy += (x[k] - mx) * (y[k] - my), sxx += (x[k] - mx) * (x[k] - mx);
+  return sxy / sxx;
 }
 
 // Enskog's viscosity for a log of equal hard disks at the window's kT; NaN and why not otherwise.
@@ -167,6 +181,9 @@ Result<ShearViscosity> shear_viscosity(const Log& log, const ViscosityOptions& o
   out.lag.resize(lags), out.eta.resize(lags), out.error.resize(lags), out.eta_xy.resize(lags);
   out.eta_normal.resize(lags), out.acf.resize(lags), out.green_kubo.resize(lags), out.green_kubo_error.resize(lags);
   std::vector<long double> both(blocks), gk_block(blocks, 0);
+  // <dG^2> (both components averaged) per block and pooled, for the slope.
+  std::vector<std::vector<double>> moment_block(blocks, std::vector<double>(lags));
+  std::vector<double> moment(lags);
   // Block b's running Green-Kubo sum; its C_0 / 2 first.
   const auto correlation = [&](std::size_t q, std::size_t l) {
     return (a.correlation[q][l] + b.correlation[q][l]) / 2 / (long double)count[q];
@@ -185,6 +202,8 @@ Result<ShearViscosity> shear_viscosity(const Log& log, const ViscosityOptions& o
     out.eta_normal[k] = pooled(hb, count).mean * helfand_scale;
     const BlockStatistic e = pooled(both, count);
     out.eta[k] = e.mean * helfand_scale, out.error[k] = e.error * helfand_scale;
+    moment[k] = e.mean;
+    for (std::size_t q = 0; q < blocks; ++q) moment_block[q][k] = double(both[q] / (long double)count[q]);
 
     std::vector<double> gk(blocks);
     long double acf = 0;
@@ -200,6 +219,11 @@ Result<ShearViscosity> shear_viscosity(const Log& log, const ViscosityOptions& o
     out.green_kubo[k] = mean / double(origins);
     out.green_kubo_error[k] = transport::standard_error(gk);
   }
+  const std::size_t half = (lags - 1) / 2;
+  out.viscosity = slope(out.lag, moment, half) * scale / 2;
+  std::vector<double> slopes(blocks);
+  for (std::size_t q = 0; q < blocks; ++q) slopes[q] = slope(out.lag, moment_block[q], half) * scale / 2;
+  out.viscosity_error = transport::standard_error(slopes);
   auto start = log.state_at(from);
   if (!start) return start.error();
   enskog_of(log, start.value(), out);
