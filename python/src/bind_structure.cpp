@@ -1,7 +1,7 @@
 // Structure and transport of a Log (ede/structure.hpp, ede/transport.hpp, ede/viscosity.hpp) for Python:
-// the library functions ede-stats gr, sk, psi6, msd, vacf and viscosity call, each report converted field by field into a dict
-// of numpy arrays; nothing is computed here. Rejected: adding them to bind_analysis.cpp, which another
-// part of the module grows too (one file per part of the API).
+// the library functions ede-stats gr, sk, psi6, msd, vacf and viscosity call, each report converted field
+// by field into a dict of numpy arrays; nothing is computed here. Rejected: adding them to
+// bind_analysis.cpp, which another part of the module grows too (one file per part of the API).
 #include <complex>
 
 #include "bindings.hpp"

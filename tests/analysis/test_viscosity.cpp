@@ -36,6 +36,15 @@ Log run_scene(const char* text, const std::string& file) {
   return Log::open(path).value();
 }
 
+// Disks of radius 0.1 and unit mass at (0.25, 0.425) with v = (1, 0.5) and (0.75, 0.575) with v = (-1, -0.5),
+// periodic unit box, t = 0.3: one collision, at t_c = 0.15.
+Log head_on_pair(const std::string& file) {
+  InitialState s = box();
+  s.add(0.25, 0.425, 1, 0.5, 0.1, 1, 0);
+  s.add(0.75, 0.575, -1, -0.5, 0.1, 1, 0);
+  return Log::open(run_logged<double>(s, periodic_until(0.3), file).path).value();
+}
+
 }  // namespace
 
 TEST_CASE("stress integral: a head-on pair in a periodic box, every bin by hand", "[analysis][viscosity]") {
@@ -43,11 +52,7 @@ TEST_CASE("stress integral: a head-on pair in a periodic box, every bin by hand"
   // at t_c = 0.15 both are at y = 0.5, 0.2 apart along x, and swap their x velocities. Total momentum 0.
   // Per unit time: sum m vx^2 = 2, sum m vy^2 = 0.5, sum m vx vy = 1 before and -1 after. The impulse on
   // disk 0 is (-2, 0) at r_01 = (-0.2, 0): +0.4 on xx, nothing off the diagonal.
-  InitialState s = box();
-  s.add(0.25, 0.425, 1, 0.5, 0.1, 1, 0);
-  s.add(0.75, 0.575, -1, -0.5, 0.1, 1, 0);
-  const auto run = run_logged<double>(s, periodic_until(0.3), "viscosity-head-on.ede");
-  const Log log = Log::open(run.path).value();
+  const Log log = head_on_pair("viscosity-head-on.ede");
   const StressIntegral w = stress_integral(log, 0, 0.1, 3).value();
   REQUIRE(w.bins() == 3);
   CHECK(w.pair_events == 1);
@@ -221,11 +226,7 @@ TEST_CASE("viscosity: the Helfand moment and the Green-Kubo integral of a known 
   // N = ((0.2 - 0.05) / 2, (0.6 - 0.05) / 2, (0.2 - 0.05) / 2) = (0.075, 0.275, 0.075). One lag (0.1), origins
   // s = 0, 1 in 2 blocks: H = (W_0^2 + W_1^2) / 2 per component; eta = H / (2 V kT dt), with
   // kT = integral K' / ((N - 1) T) = (0.6 + 0.15) / 2 / 0.3 = 1.25.
-  InitialState s = box();
-  s.add(0.25, 0.425, 1, 0.5, 0.1, 1, 0);
-  s.add(0.75, 0.575, -1, -0.5, 0.1, 1, 0);
-  const auto run = run_logged<double>(s, periodic_until(0.3), "viscosity-helfand.ede");
-  const Log log = Log::open(run.path).value();
+  const Log log = head_on_pair("viscosity-helfand.ede");
   ViscosityOptions o;
   o.lag_step = 0.1, o.max_lag = 0.1, o.blocks = 2;
   const ShearViscosity v = shear_viscosity(log, o).value();

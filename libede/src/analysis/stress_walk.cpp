@@ -72,8 +72,10 @@ class StressWalk {
 
   void finish(long double end) {
     integrate_to(end);
-    for (std::size_t k = 0; k < bins_; ++k)
-      out_.xx[k] = double(xx_[k]), out_.yy[k] = double(yy_[k]), out_.xy[k] = double(xy_[k]), out_.yx[k] = double(yx_[k]);
+    for (std::size_t k = 0; k < bins_; ++k) {
+      out_.xx[k] = double(xx_[k]), out_.yy[k] = double(yy_[k]);
+      out_.xy[k] = double(xy_[k]), out_.yx[k] = double(yx_[k]);
+    }
   }
 
  private:
@@ -147,12 +149,13 @@ Result<StressIntegral> integrate(const Log& log, double from, double bin_width, 
     walk.integrate_to(e.time);
     switch (e.kind) {
       case EventKind::Pair: ++out.pair_events, walk.pair(e); break;
-      case EventKind::Step: ++out.step_events, walk.pair(e); break;  // a step's impulse is along the line of centres too
+      case EventKind::Step: ++out.step_events, walk.pair(e); break;  // its impulse is along the line of centres too
       case EventKind::Wrap: break;                                   // a move by one box length: no velocity changes
       default:
         refused = std::string("a ") + to_string(e.kind) + " event at t = " + brief(e.time) +
-                  (e.kind == EventKind::Action ? " reverses every velocity inside the window; choose a window before or after it"
-                                               : " changes a velocity from outside the gas; this analysis needs a closed, periodic gas");
+                  (e.kind == EventKind::Action
+                       ? " reverses every velocity inside the window; choose a window before or after it"
+                       : " changes a velocity from outside the gas; this analysis needs a closed, periodic gas");
     }
   });
   if (!walked) return walked.error();
