@@ -1,11 +1,12 @@
 """Structure and transport of a log, as ede-stats gr, sk, psi6, msd and vacf compute them (the same
 library functions; docs/analysis.md has every formula): g(r) per species pair, g(sigma) three ways, S(k),
-psi6 and g6(r), the exactly unwrapped MSD with D, and the exact VACF."""
+psi6 and g6(r), the exactly unwrapped MSD with D, the exact VACF, and the shear viscosity from the exact
+stress integral."""
 from . import _ede
 from .analysis import _log, _report
 
 __all__ = ["pair_correlation", "contact_values", "structure_factor", "bond_order", "msd", "vacf",
-           "enskog_diffusion", "henderson_contact", "kolafa_rottner_z", "kolafa_rottner_contact"]
+           "viscosity", "enskog_viscosity", "enskog_diffusion", "henderson_contact", "kolafa_rottner_z", "kolafa_rottner_contact"]
 
 
 def _species(log, name):
@@ -50,6 +51,19 @@ def vacf(log, max_lag, *, lag_step=None, t0=None, t1=None, species=None, groups=
     """Velocity autocorrelation, exact from the events, and its Green-Kubo integral."""
     step = float(lag_step) if lag_step is not None else float(max_lag) / 100
     return _report(_ede.vacf(_log(log), t0, t1, step, float(max_lag), _species(log, species), int(groups)))
+
+
+def viscosity(log, max_lag, *, lag_step=None, t0=None, t1=None, blocks=10):
+    """Shear viscosity of an equilibrium run (periodic, elastic, no thermostat) from the exact stress
+    integral: eta(t) by the Helfand moment with its block error, the estimate `viscosity` (the moment's
+    slope over the last half of the lags), the Green-Kubo running integral, and Enskog's eta_E."""
+    step = float(lag_step) if lag_step is not None else float(max_lag) / 100
+    return _report(_ede.viscosity(_log(log), t0, t1, step, float(max_lag), int(blocks)))
+
+
+def enskog_viscosity(phi, sigma, g_contact, kT, mass):
+    """Enskog's 2D viscosity eta_0 [1.022 (1 + phi g)^2 / g + (8 / pi) phi^2 g], eta_0 = sqrt(m kT / pi) / (2 sigma)."""
+    return _ede.enskog_viscosity(phi, sigma, g_contact, kT, mass)
 
 
 def enskog_diffusion(n, sigma, g_contact, kT, mass):

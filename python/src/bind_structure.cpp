@@ -1,7 +1,7 @@
-// Structure and transport of a Log (ede/structure.hpp, ede/transport.hpp) for Python: the library
-// functions ede-stats gr, sk, psi6, msd and vacf call, each report converted field by field into a dict
-// of numpy arrays; nothing is computed here. Rejected: adding them to bind_analysis.cpp, which another
-// part of the module grows too (one file per part of the API).
+// Structure and transport of a Log (ede/structure.hpp, ede/transport.hpp, ede/viscosity.hpp) for Python:
+// the library functions ede-stats gr, sk, psi6, msd, vacf and viscosity call, each report converted field
+// by field into a dict of numpy arrays; nothing is computed here. Rejected: adding them to
+// bind_analysis.cpp, which another part of the module grows too (one file per part of the API).
 #include <complex>
 
 #include "bindings.hpp"
@@ -104,6 +104,28 @@ void bind_structure(py::module_& m) {
     d["lag"] = vec(r.lag), d["c"] = vec(r.c), d["error"] = vec(r.error), d["green_kubo"] = vec(r.green_kubo);
     d["disks"] = r.disks;
     return d;
+  });
+  m.def("viscosity", [](SharedLog& log, py::object from, py::object to, double lag_step, double max_lag,
+                        std::size_t blocks) {
+    ViscosityOptions o;
+    if (!from.is_none()) o.from = from.cast<double>();
+    if (!to.is_none()) o.to = to.cast<double>();
+    o.lag_step = lag_step, o.max_lag = max_lag, o.blocks = blocks;
+    const ShearViscosity r = log.read("viscosity()", [&](const Log& l) { return shear_viscosity(l, o); });
+    py::dict d;
+    d["lag"] = vec(r.lag), d["eta"] = vec(r.eta), d["error"] = vec(r.error), d["eta_xy"] = vec(r.eta_xy);
+    d["eta_normal"] = vec(r.eta_normal), d["acf"] = vec(r.acf), d["green_kubo"] = vec(r.green_kubo);
+    d["green_kubo_error"] = vec(r.green_kubo_error), d["viscosity"] = r.viscosity;
+    d["viscosity_error"] = r.viscosity_error, d["disks"] = r.disks, d["bins"] = r.bins, d["origins"] = r.origins;
+    d["blocks"] = r.blocks, d["bin_width"] = r.bin_width, d["area"] = r.area, d["kT"] = r.kT;
+    d["pressure"] = r.pressure, d["mean_shear_stress"] = r.mean_shear_stress;
+    d["mean_shear_stress_error"] = r.mean_shear_stress_error, d["mean_normal_stress"] = r.mean_normal_stress;
+    d["mean_normal_stress_error"] = r.mean_normal_stress_error, d["packing_fraction"] = r.packing_fraction;
+    d["g_contact"] = r.g_contact, d["enskog"] = r.enskog, d["dilute"] = r.dilute, d["enskog_note"] = r.enskog_note;
+    return d;
+  });
+  m.def("enskog_viscosity", [](double phi, double sigma, double g, double kT, double mass) {
+    return enskog_viscosity(phi, sigma, g, kT, mass);
   });
   m.def("enskog_diffusion", &enskog_diffusion);
   m.def("henderson_contact", &henderson_contact_value);

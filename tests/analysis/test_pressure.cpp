@@ -11,7 +11,10 @@
 
 #include "ede/analysis.hpp"
 #include "ede/pressure.hpp"
+#include "ede/kinetic_theory.hpp"
+#include "ede/simulation.hpp"
 #include "log_test_support.hpp"
+#include "tool_runner.hpp"  // temp_path
 
 using namespace ede;
 using namespace ede::test;
@@ -241,4 +244,36 @@ TEST_CASE("measure_pressure refuses an empty window, a window past the log's end
   CHECK_THAT(error_of(window(0, 3)), Catch::Contains("after the end of the log"));
   CHECK_THAT(error_of(window(0, 1, 1)), Catch::Contains("at least 2 blocks"));
   CHECK(error_of(window(0, 2)).empty());
+}
+
+TEST_CASE("pressure: the thermostat's redraws change the kinetic energy the pressure pass integrates",
+          "[analysis][pressure][thermostat]") {
+  // Found while writing the stress integral: the pressure pass skipped thermostat events, so its mirror of
+  // the velocities went stale and K drifted from the state's. K at the window's end must be the state's.
+  const std::string path = temp_path("pressure-thermostat.ede");
+  auto sim = Simulation::create(parse_scene_text(R"(seed = 6
+[box]
+size = [1.0, 1.0]
+boundary = "periodic"
+[thermostat]
+temperature = 2.0
+rate = 5.0
+[[species]]
+name = "gas"
+count = 100
+radius = 0.01
+[species.velocity]
+kind = "maxwell"
+temperature = 0.5
+[stop]
+time = 1.0
+)", "thermostat.toml").value(), {.log_path = path}).value();
+  REQUIRE(sim.run() == RunStatus::ReachedTime);
+  REQUIRE(sim.close());
+  const Log log = Log::open(path).value();
+  PressureOptions p;
+  p.from = 0.1, p.to = 1.0;
+  const PressureReport r = measure_pressure(log, p).value();
+  const Temperature end = temperature_of(log.state_at(1.0).value());
+  CHECK(r.totals.kinetic_end == Approx(end.kinetic_cm).epsilon(1e-12));
 }

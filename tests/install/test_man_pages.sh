@@ -39,9 +39,11 @@ for exe in "$prefix"/bin/ede-*; do
   check_page "$tool" "$exe"
   version=$("$exe" --version | sed -n 's/^[^,]*, ede //p')
   grep -q "ede $version" "$work/$tool.txt" || fail "$tool.1 does not name version $version"
+  # The SEE ALSO list may wrap after a hyphen inside a page's name (ede-stats has twelve): join such lines.
+  sed -e ':a' -e '/-$/{N;s/-\n *\([a-z]\)/-\1/;ta' -e '}' "$work/$tool.txt" >"$work/$tool.joined"
   for sub in $(sed -n '/^Subcommands:/,$p' "$work/$tool.help" | sed -n 's/^  \([a-z0-9-]*\) .*/\1/p'); do
     check_page "$tool-$sub" "$exe" "$sub"
-    grep -q "$tool-$sub(1)" "$work/$tool.txt" || fail "$tool.1 does not point to $tool-$sub(1)"
+    grep -q "$tool-$sub(1)" "$work/$tool.joined" || fail "$tool.1 does not point to $tool-$sub(1)"
   done
 done
 [ "$tools" -ge 8 ] || fail "only $tools tools installed"

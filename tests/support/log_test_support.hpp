@@ -40,6 +40,7 @@ LoggedRun<T> run_logged(const InitialState& s, const EngineOptions& o, const std
   info.gx = o.physics.gravity[0];
   info.gy = o.physics.gravity[1];
   info.rotation = uses_rotation(o);
+  info.steps = o.physics.has_steps();  // step events need format version 3
   info.engine_constants = true;     // all of the above, as the engine has them (run/log_run_info.cpp)
   settings.check_exactness = true;  // and every vouch of the engine's recomputed
   auto writer = LogWriter<T>::create(r.path, info, settings);

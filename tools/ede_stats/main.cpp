@@ -23,7 +23,7 @@ static int run_main(int argc, char** argv) {
       {"pressure", add_pressure_command(app)}, {"impacts", add_impacts_command(app)},
       {"gr", add_gr_command(app)},             {"sk", add_sk_command(app)},
       {"psi6", add_psi6_command(app)},         {"msd", add_msd_command(app)},
-      {"vacf", add_vacf_command(app)},
+      {"vacf", add_vacf_command(app)},         {"viscosity", add_viscosity_command(app)},
   };
   ede::tools::add_version_flags(app, "ede-stats");
   if (const auto stop = ede::tools::parse_command_line(app, argc, argv)) return *stop;

@@ -22,5 +22,6 @@ Command add_sk_command(CLI::App& app);          // static structure factor S(k)
 Command add_psi6_command(CLI::App& app);        // bond-orientational order psi6, g6(r)
 Command add_msd_command(CLI::App& app);         // mean-square displacement, D against Enskog
 Command add_vacf_command(CLI::App& app);        // velocity autocorrelation, exact
+Command add_viscosity_command(CLI::App& app);   // shear viscosity from the exact stress integral
 
 }  // namespace ede::stats_tool

@@ -34,3 +34,4 @@
 #include "ede/structure.hpp"
 #include "ede/transport.hpp"
 #include "ede/version.hpp"
+#include "ede/viscosity.hpp"

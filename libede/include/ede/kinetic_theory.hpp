@@ -58,6 +58,21 @@ double enskog_collision_rate(double number_density, double sigma, double g_conta
 // Enskog's self-diffusion coefficient of hard disks (first Sonine approximation; Gass, J. Chem. Phys. 54,
 // 1898 (1971)): D_E = (1 / (2 n sigma g(sigma))) sqrt(kT / (pi m)) = kT / (m omega_E).
 double enskog_diffusion(double number_density, double sigma, double g_contact, double kT, double mass);
+// Shear viscosity of hard disks (docs/kinetic-theory.md, "Shear viscosity", derives and checks both).
+// Dilute (Boltzmann, Chapman-Enskog): eta_0 = s (1 / (2 sigma)) sqrt(m kT / pi), where s = 1 is the first
+// Sonine approximation (Gass, J. Chem. Phys. 54, 1898 (1971)) and the series converges to
+// s = kViscositySonineFactor = 1.0220 (2nd approximation 1.0200, 7th 1.021969: scripts/sonine_viscosity.py
+// computes the bracket integrals of the 2D collision operator and reproduces both).
+inline constexpr double kViscositySonineFactor = 1.0220;
+double dilute_viscosity(double sigma, double kT, double mass, double sonine = kViscositySonineFactor);
+// Enskog's dense-fluid viscosity of hard disks with chi = g(sigma):
+//   eta_E = eta_0^(1) [ s (1 + phi chi)^2 / chi + (8 / pi) phi^2 chi ]
+//         = eta_0^(1) [ 1/chi + 2 phi + (1 + 8/pi) phi^2 chi ]   (s = 1, Gass's first Sonine form);
+// the Sonine factor corrects the kinetic (streaming and collisional-transfer) part, not the last term,
+// which comes from the local-equilibrium part of the collision transfer (the 3D analogue: Chapman and
+// Cowling's 1.016 (1/chi)(1 + 0.4 b n chi)^2 + 0.7614 (b n)^2 chi in units of the corrected eta_0).
+double enskog_viscosity(double phi, double sigma, double g_contact, double kT, double mass,
+                        double sonine = kViscositySonineFactor);
 // tau = 4 / ((1 - xi^2) omega0); infinity for xi = 1.
 double haff_tau(double restitution, double omega0);
 

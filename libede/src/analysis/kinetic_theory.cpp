@@ -15,6 +15,15 @@ double enskog_diffusion(double n, double sigma, double g_contact, double kT, dou
   return 1 / (2 * n * sigma * g_contact) * std::sqrt(kT / (std::numbers::pi * mass));
 }
 
+double dilute_viscosity(double sigma, double kT, double mass, double sonine) {
+  return sonine / (2 * sigma) * std::sqrt(mass * kT / std::numbers::pi);
+}
+
+double enskog_viscosity(double phi, double sigma, double chi, double kT, double mass, double sonine) {
+  const double streaming = (1 + phi * chi) * (1 + phi * chi) / chi;
+  return dilute_viscosity(sigma, kT, mass, 1) * (sonine * streaming + 8 / std::numbers::pi * phi * phi * chi);
+}
+
 double enskog_collision_rate(double n, double sigma, double g, double kT, double m) {
   return 2 * n * sigma * g * std::sqrt(std::numbers::pi * kT / m);
 }

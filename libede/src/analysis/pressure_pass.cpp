@@ -41,6 +41,7 @@ class PressurePass {
       case EventKind::Step: pair(e); break;  // a step's impulse acts along the line of centres too
       case EventKind::Wall: wall(e); break;
       case EventKind::Action: resync(); break;
+      case EventKind::Thermostat: set_velocity(std::size_t(e.i), e.vix, e.viy); break;  // a redraw: no impulse term
       default: break;  // wraps move a disk by a box length: no velocity change
     }
     return true;
