@@ -16,6 +16,7 @@ enum ScalarType {
 enum Boundary {
   walls @0;
   periodic @1;
+  leesEdwards @2;  # format version 3: periodic, the images above and below sliding (the scene's box.shear_rate)
 }
 
 # The first record: what was run, by what, and the per-disk constants.

@@ -56,7 +56,8 @@ void print_events(const Log& log, std::string& problem) {
                      ", action " + std::to_string(c.of(EventKind::Action)) +
                      (c.of(EventKind::Segment) ? ", segment " + std::to_string(c.of(EventKind::Segment)) : "") +
                      (c.of(EventKind::Step) ? ", step " + std::to_string(c.of(EventKind::Step)) : "") +
-                     (c.of(EventKind::Thermostat) ? ", thermostat " + std::to_string(c.of(EventKind::Thermostat)) : ""));
+                     (c.of(EventKind::Thermostat) ? ", thermostat " + std::to_string(c.of(EventKind::Thermostat)) : "") +
+                     (c.of(EventKind::Shear) ? ", shear " + std::to_string(c.of(EventKind::Shear)) : ""));
 }
 
 void print_records(const Log& log) {

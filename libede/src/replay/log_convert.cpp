@@ -32,6 +32,7 @@ Status convert_as(const std::shared_ptr<const LogReader>& log, const std::string
   run.gx = h.gx, run.gy = h.gy;
   run.rotation = h.rotation();  // the replayed state carries each disk's inertia and spin
   run.thermostat = h.format_version >= 3 && version >= 3;  // thermostat events exist in version 3 only
+  run.shear = h.lees_edwards;
   run.engine_version = h.engine_version, run.compiler = h.compiler, run.compile_flags = h.compile_flags;
   if (version >= 2) {
     auto scene = parse_scene_text(h.scene_text, h.scene_name);
