@@ -37,7 +37,7 @@ void print_header(const LogInfo& i) {
   line("flags", i.compile_flags);
   line("scalar", to_string(i.scalar));
   line("disks", std::to_string(i.disks));
-  line("box", number(i.lx) + " x " + number(i.ly) + ", " + to_string(i.boundary));
+  line("box", number(i.lx) + " x " + number(i.ly) + ", " + (i.lees_edwards ? "lees-edwards" : to_string(i.boundary)));
   line("species", species_line(i));
   line("TC model", i.tc_model ? "yes (keyframes keep the TC times)" : "no");
 }
