@@ -10,6 +10,7 @@
 
 #include "ede/ede.hpp"
 #include "reference_compare.hpp"
+#include "scene_test_support.hpp"  // run_to_log, interrupted_and_resumed
 #include "tool_runner.hpp"  // temp_path, read_file
 
 using namespace ede;
@@ -48,11 +49,7 @@ time = 6.0
 Scene scene(const std::string& scalar = "double") { return parse_scene_text(scene_text(scalar), "shear.toml").value(); }
 
 std::string run_to_log(const std::string& name, const std::string& scalar = "double") {
-  const std::string path = temp_path(name);
-  auto sim = Simulation::create(scene(scalar), {.log_path = path}).value();
-  REQUIRE(sim.run() == RunStatus::ReachedTime);
-  REQUIRE(sim.close());
-  return path;
+  return ede::test::run_to_log(scene(scalar), name, RunStatus::ReachedTime);
 }
 
 }  // namespace
@@ -104,20 +101,7 @@ TEST_CASE("shear log: each crossing names its disk and edge, the state after it 
 TEST_CASE("shear log: the same scene gives the same bytes, and an interrupted run resumes to them", "[log][shear][resume]") {
   const std::string whole = run_to_log("shear-whole.ede"), again = run_to_log("shear-again.ede");
   CHECK(read_file(whole) == read_file(again));
-  const std::string cut = temp_path("shear-cut.ede");
-  {
-    auto sim = Simulation::create(scene(), {.log_path = cut}).value();
-    REQUIRE(sim.run(20000) == RunStatus::Running);
-    sim.interrupt();
-    REQUIRE(sim.close());
-    const LogKept k = sim.log_kept().value();
-    REQUIRE(k.resumable);
-    CHECK(k.resume_event > 0);
-  }
-  auto resumed = Simulation::resume(cut).value();
-  REQUIRE(resumed.run() == RunStatus::ReachedTime);
-  REQUIRE(resumed.close());
-  CHECK(read_file(cut) == read_file(whole));
+  CHECK(interrupted_and_resumed(scene(), "shear-cut.ede", 20000) == read_file(whole));
 }
 
 TEST_CASE("shear log: a Lees-Edwards log cannot become version 2", "[log][shear]") {
