@@ -84,17 +84,18 @@ TEST_CASE("shear: crossing the top and the bottom edge moves x by the offset and
 }
 
 TEST_CASE("shear: the offset wraps around the box and x is brought back into it", "[shear]") {
-  // Rate 1 in a 4 x 4 box (u = 4): at t = 2.75 the offset is fmod(11, 4) = 3; disk at x = 3.5 crossing
-  // the top lands at 0.5, one at x = 0.5 crossing the bottom at 3.5.
+  // Rate 1 in a 4 x 4 box (u = 4): at t = 2.75 the offset is fmod(11, 4) = 3; a disk at x = 2.5 crossing
+  // the top lands at -0.5 + 4 = 3.5, one at x = 2 crossing the bottom at 5 - 4 = 1 (each clear of the
+  // other's image as they cross).
   InitialState s = box(4, 4);
-  s.add(3.5, 4 - 2.75 * 0.5, 0, 0.5, 0.1, 1, 0);
-  s.add(0.5, 2.75 * 0.5, 0, -0.5, 0.1, 1, 0);
+  s.add(2.5, 4 - 2.75 * 0.5, 0, 0.5, 0.1, 1, 0);
+  s.add(2, 2.75 * 0.5, 0, -0.5, 0.1, 1, 0);
   auto run = run_recorded(s, sheared(1, 2.8));
   const auto crossings = run.recorder->of_kind(EventKind::Shear);
   REQUIRE(crossings.size() == 2);
   for (const auto& c : crossings) {
     CHECK(c.time == 2.75);
-    CHECK(c.vjx == (c.i == 0 ? 0.5 : 3.5));
+    CHECK(c.vjx == (c.i == 0 ? 3.5 : 1.0));
     CHECK(c.vix == (c.i == 0 ? -4 : 4));
   }
 }
