@@ -113,3 +113,13 @@ TEST_CASE("shear log: a Lees-Edwards log cannot become version 2", "[log][shear]
   REQUIRE(Log::open(path).value().convert(again, 3).ok());
   CHECK(Log::open(again).value().content_digest().value() == Log::open(path).value().content_digest().value());
 }
+
+TEST_CASE("shear log: the transport analyses refuse a sheared log with a message", "[log][shear]") {
+  const Log log = Log::open(run_to_log("shear-transport.ede")).value();
+  TransportOptions o;
+  o.max_lag = 1, o.lag_step = 0.1;
+  const auto msd = mean_square_displacement(log, o);
+  REQUIRE_FALSE(msd.ok());
+  CHECK(msd.error().message.find("Lees-Edwards") != std::string::npos);
+  REQUIRE_FALSE(velocity_autocorrelation(log, o).ok());
+}
