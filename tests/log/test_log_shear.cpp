@@ -65,15 +65,7 @@ TEST_CASE("shear log: version 3, exact against the reference reader, verified by
     CHECK(log.scene().value().shear_rate == 2.0);
     const EventCounts counts = log.count_events().value();
     CHECK(counts.of(EventKind::Shear) > 200);
-    const std::uint64_t total = open_log(path)->total_events();
-    if (scalar == "double") CHECK(compare_with_reference<double>(path) == total);
-    if (scalar == "float") CHECK(compare_with_reference<float>(path) == total);
-    if (scalar == "long double") CHECK(compare_with_reference<long double>(path) == total);
-    const auto verified = log.verify();
-    REQUIRE(verified.ok());
-    INFO(verified.value().text);
-    CHECK(verified.value().identical);
-    CHECK(verified.value().resumable_checked >= 2);
+    check_exact_and_verified(path, scalar);
   }
 }
 

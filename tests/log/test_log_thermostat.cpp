@@ -71,15 +71,7 @@ TEST_CASE("thermostat log: version 3, exact against the reference reader, verifi
     const EventCounts counts = log.count_events().value();
     CHECK(counts.of(EventKind::Thermostat) > 1000);  // 150 x 0.3 + 30 x 0.6 = 63 per unit time, for 40
     CHECK(counts.of(EventKind::Thermostat) < 3500);
-    const std::uint64_t total = open_log(path)->total_events();
-    if (scalar == "double") CHECK(compare_with_reference<double>(path) == total);
-    if (scalar == "float") CHECK(compare_with_reference<float>(path) == total);
-    if (scalar == "long double") CHECK(compare_with_reference<long double>(path) == total);
-    const auto verified = log.verify();
-    REQUIRE(verified.ok());
-    INFO(verified.value().text);
-    CHECK(verified.value().identical);
-    CHECK(verified.value().resumable_checked >= 2);
+    check_exact_and_verified(path, scalar);
   }
 }
 
