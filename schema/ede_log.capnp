@@ -16,6 +16,7 @@ enum ScalarType {
 enum Boundary {
   walls @0;
   periodic @1;
+  leesEdwards @2;  # format version 3: periodic, the images above and below sliding (the scene's box.shear_rate)
 }
 
 # The first record: what was run, by what, and the per-disk constants.
@@ -87,7 +88,8 @@ struct Keyframe {
   lastPartner @8 :List(Int32);  # resumable keyframes: the engine's last-partner ids
   lastCollision @9 :Data;       # resumable keyframes of TC runs: each disk's last collision time
   engineCounts @10 :List(UInt64);  # resumable: engine counters by EventKind 0-5, then stale, then tcElastic, then
-                                   # segment (runs with segments); version 3: always segment, step, then thermostat (its runs)
+                                   # segment (runs with segments); version 3: always segment, step, then thermostat (its runs
+                                   # and Lees-Edwards ones), then shear (Lees-Edwards runs)
   nextSample @11 :UInt64;       # resumable: samples already taken
   nextAction @12 :UInt64;       # resumable: actions already done
   sameTimeEvents @13 :UInt64;   # resumable: the stall detector's count

@@ -58,6 +58,12 @@ std::vector<EffectConfig> effect_configs() {
       // run that engine; the all-effects engine has none, so that column stays empty.
       {"thermostat (nu = 0.01)", {"thermostat.temperature=1", "thermostat.rate=0.01"}, false},
       {"thermostat (nu = 1)", {"thermostat.temperature=1", "thermostat.rate=1"}, false},
+      // A Lees-Edwards box (the sliding images' offset, their scans, the realignments, the shear events):
+      // the sheared engine's cost on the same gas, not sheared (rate 0: a periodic box run by it) and
+      // sheared (rate 1: the images slide at one box length per unit time). Scenes without it never run
+      // that engine; the all-effects engine has none, so that column stays empty.
+      {"Lees-Edwards (rate 0)", {"box.boundary=\"lees-edwards\"", "box.shear_rate=0"}, false},
+      {"Lees-Edwards (rate 1)", {"box.boundary=\"lees-edwards\"", "box.shear_rate=1"}, false},
       {"every effect (weak g)", {inelastic_pairs, "physics.pairs[0].restitution=0.9", "physics.wall_restitution=0.9",
                                  "physics.tc=1e-5", "physics.gravity=[0, -0.001]"}},
   };

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "ede/log.hpp"
 #include "log_test_support.hpp"
 #include "reference_reader.hpp"
 
@@ -41,6 +42,21 @@ std::uint64_t compare_with_reference(const std::string& path) {
     checked = events;
   });
   return checked;
+}
+
+// A run's log, in the scalar type its scene names ("float", "double", "long double"), decodes to the same
+// bits with the library and the reference reader to its last event, and a re-run verifies it (at least
+// two resumable keyframes checked on the way).
+inline void check_exact_and_verified(const std::string& path, const std::string& scalar) {
+  const std::uint64_t total = open_log(path)->total_events();
+  if (scalar == "double") CHECK(compare_with_reference<double>(path) == total);
+  if (scalar == "float") CHECK(compare_with_reference<float>(path) == total);
+  if (scalar == "long double") CHECK(compare_with_reference<long double>(path) == total);
+  const auto verified = Log::open(path).value().verify();
+  REQUIRE(verified.ok());
+  INFO(verified.value().text);
+  CHECK(verified.value().identical);
+  CHECK(verified.value().resumable_checked >= 2);
 }
 
 }  // namespace ede::test

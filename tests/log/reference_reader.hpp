@@ -248,6 +248,7 @@ class Reader {
 
   T predict_time(int kind, std::int32_t i, std::int32_t j) const {
     if (kind == 7 || kind == 8) return never();  // a step, a redraw (version 3): no prediction
+    if (kind == 9) kind = 3;                      // a shear crossing (version 3): the wrap's prediction
     if (kind == 6) return segment_time(disk_[std::size_t(i)], seg_[std::size_t(j)]);
     if (kind == 1) {
       const Record<T>& d = disk_[std::size_t(i)];
@@ -320,7 +321,7 @@ class Reader {
       const int kind = version_ >= 2 ? (byte & ~16) : byte;
       const bool tc = version_ >= 2 && (byte & 16);
       std::int32_t i = -1, j = -1;
-      if (kind == 0 || kind == 1 || kind == 3 || kind == 6 || kind == 7) {
+      if (kind == 0 || kind == 1 || kind == 3 || kind == 6 || kind == 7 || kind == 9) {
         i = std::int32_t(disks.varint());
         const U128 p = partners.varint();
         j = kind == 0 || kind == 7 ? std::int32_t(i + unzig(p)) : std::int32_t(p);
@@ -446,6 +447,14 @@ class Reader {
         if (j == 1) a.x = a.x + lx_;
         if (j == 2) a.y = a.y - ly_;
         if (j == 3) a.y = a.y + ly_;
+      } else if (kind == 9) {  // version 3, a shear crossing: a wrap through the top or bottom, x and vx raw
+        Record<T>& a = disk_[std::size_t(i)];
+        a.x = a.x + a.vx * (t - a.t);
+        a.y = a.y + a.vy * (t - a.t);
+        a.t = t;
+        a.y = j == 2 ? a.y - ly_ : a.y + ly_;
+        a.x = scalar_at<T>(raw.data() + raw_at), a.vx = scalar_at<T>(raw.data() + raw_at + kWidth<T>);
+        raw_at += 2 * kWidth<T>;
       } else if (kind == 8) {  // the redrawn velocity, raw
         Record<T>& a = disk_[std::size_t(i)];
         bring(a, t);

@@ -9,6 +9,7 @@
 
 #include "ede/ede.hpp"
 #include "reference_compare.hpp"
+#include "scene_test_support.hpp"  // interrupted_and_resumed
 #include "tool_runner.hpp"  // temp_path, read_file
 
 using namespace ede;
@@ -70,15 +71,7 @@ TEST_CASE("thermostat log: version 3, exact against the reference reader, verifi
     const EventCounts counts = log.count_events().value();
     CHECK(counts.of(EventKind::Thermostat) > 1000);  // 150 x 0.3 + 30 x 0.6 = 63 per unit time, for 40
     CHECK(counts.of(EventKind::Thermostat) < 3500);
-    const std::uint64_t total = open_log(path)->total_events();
-    if (scalar == "double") CHECK(compare_with_reference<double>(path) == total);
-    if (scalar == "float") CHECK(compare_with_reference<float>(path) == total);
-    if (scalar == "long double") CHECK(compare_with_reference<long double>(path) == total);
-    const auto verified = log.verify();
-    REQUIRE(verified.ok());
-    INFO(verified.value().text);
-    CHECK(verified.value().identical);
-    CHECK(verified.value().resumable_checked >= 2);
+    check_exact_and_verified(path, scalar);
   }
 }
 
@@ -101,20 +94,7 @@ TEST_CASE("thermostat log: each event names its disk and its new velocity, the s
 TEST_CASE("thermostat log: the same scene gives the same bytes, and an interrupted run resumes to them", "[log][thermostat][resume]") {
   const std::string whole = run_to_log("thermo-whole.ede"), again = run_to_log("thermo-again.ede");
   CHECK(read_file(whole) == read_file(again));
-  const std::string cut = temp_path("thermo-cut.ede");
-  {
-    auto sim = Simulation::create(scene(), {.log_path = cut}).value();
-    REQUIRE(sim.run(25000) == RunStatus::Running);
-    sim.interrupt();
-    REQUIRE(sim.close());
-    const LogKept k = sim.log_kept().value();
-    REQUIRE(k.resumable);
-    CHECK(k.resume_event > 0);
-  }
-  auto resumed = Simulation::resume(cut).value();
-  REQUIRE(resumed.run() == RunStatus::ReachedTime);
-  REQUIRE(resumed.close());
-  CHECK(read_file(cut) == read_file(whole));
+  CHECK(interrupted_and_resumed(scene(), "thermo-cut.ede", 25000) == read_file(whole));
 }
 
 TEST_CASE("thermostat log: a run without a thermostat still writes version 2, and version 3 cannot become 2", "[log][thermostat]") {

@@ -47,6 +47,25 @@ inline std::string run_to_log(const Scene& scene, const std::string& file, std::
   return path;
 }
 
+// The scene run into temp_path(file) for `events` events, interrupted there (at a resumable point it
+// must have passed), then resumed to its end: the bytes of the finished log.
+inline std::string interrupted_and_resumed(const Scene& scene, const std::string& file, std::uint64_t events) {
+  const std::string path = temp_path(file);
+  {
+    auto sim = Simulation::create(scene, {.log_path = path}).value();
+    REQUIRE(sim.run(events) == RunStatus::Running);
+    sim.interrupt();
+    REQUIRE(sim.close());
+    const LogKept k = sim.log_kept().value();
+    REQUIRE(k.resumable);
+    CHECK(k.resume_event > 0);
+  }
+  auto resumed = Simulation::resume(path).value();
+  REQUIRE(is_finished(resumed.run()));
+  REQUIRE(resumed.close());
+  return read_file(path);
+}
+
 // A gas of one species, "gas", as TOML: seed, box size, count, radius, an optional [species.placement]
 // table, the velocity rule and the stop condition (each field is the TOML text of its value or lines).
 struct GasToml {

@@ -1,7 +1,8 @@
 // ede-replay events: the logged events in a time or index range, as CSV.
 //
 //   index,time,kind,i,j,vix,viy,vjx,vjy
-// kind is pair, wall, wrap, action, segment or thermostat (i: the disk whose velocity was redrawn, j -1);
+// kind is pair, wall, wrap, action, segment, thermostat (i: the disk whose velocity was redrawn, j -1) or
+// shear (i crossed the sliding edge of a Lees-Edwards box, j 2 top or 3 bottom; vix, viy its new velocity);
 // j is the partner (pair), the wall (0 left, 1 right, 2 bottom,
 // 3 top) or the wrap direction (0 right, 1 left, 2 top, 3 bottom: the edge crossed); the velocities are
 // the post-event ones (pair: both disks; wall: disk i). Columns a kind does not have are empty. Numbers
@@ -36,11 +37,11 @@ struct EventsOptions {
 
 bool has_disk(EventKind k) {
   return k == EventKind::Pair || k == EventKind::Wall || k == EventKind::Wrap || k == EventKind::Segment ||
-         k == EventKind::Step || k == EventKind::Thermostat;
+         k == EventKind::Step || k == EventKind::Thermostat || k == EventKind::Shear;
 }
 bool has_vi(EventKind k) {
   return k == EventKind::Pair || k == EventKind::Wall || k == EventKind::Segment || k == EventKind::Step ||
-         k == EventKind::Thermostat;
+         k == EventKind::Thermostat || k == EventKind::Shear;
 }
 
 // One row; the columns an event kind does not have are left empty.

@@ -37,7 +37,7 @@ void print_header(const LogInfo& i) {
   line("flags", i.compile_flags);
   line("scalar", to_string(i.scalar));
   line("disks", std::to_string(i.disks));
-  line("box", number(i.lx) + " x " + number(i.ly) + ", " + to_string(i.boundary));
+  line("box", number(i.lx) + " x " + number(i.ly) + ", " + (i.lees_edwards ? "lees-edwards" : to_string(i.boundary)));
   line("species", species_line(i));
   line("TC model", i.tc_model ? "yes (keyframes keep the TC times)" : "no");
 }
@@ -56,7 +56,8 @@ void print_events(const Log& log, std::string& problem) {
                      ", action " + std::to_string(c.of(EventKind::Action)) +
                      (c.of(EventKind::Segment) ? ", segment " + std::to_string(c.of(EventKind::Segment)) : "") +
                      (c.of(EventKind::Step) ? ", step " + std::to_string(c.of(EventKind::Step)) : "") +
-                     (c.of(EventKind::Thermostat) ? ", thermostat " + std::to_string(c.of(EventKind::Thermostat)) : ""));
+                     (c.of(EventKind::Thermostat) ? ", thermostat " + std::to_string(c.of(EventKind::Thermostat)) : "") +
+                     (c.of(EventKind::Shear) ? ", shear " + std::to_string(c.of(EventKind::Shear)) : ""));
 }
 
 void print_records(const Log& log) {

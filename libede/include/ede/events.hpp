@@ -29,6 +29,8 @@ using Time = long double;
 //   Step     two disks reach a step of their stepped potential (a square well or shoulder, outside the
 //            hard core): they cross it, trading kinetic for potential energy, or bounce off it
 //   Thermostat  the Andersen thermostat redraws one disk's velocity (Event::j is -1)
+//   Shear    a disk crosses the sliding (top or bottom) edge of a Lees-Edwards box: y moves by one box
+//            height, x by the images' offset, vx by their velocity (Event::j: WrapDir, top or bottom)
 #define EDE_EVENT_KINDS(X)    \
   X(Pair, 0, "pair")          \
   X(Wall, 1, "wall")          \
@@ -38,7 +40,8 @@ using Time = long double;
   X(Sample, 5, "sample")      \
   X(Segment, 6, "segment")    \
   X(Step, 7, "step")          \
-  X(Thermostat, 8, "thermostat")
+  X(Thermostat, 8, "thermostat") \
+  X(Shear, 9, "shear")
 
 #define EDE_EVENT_KIND_ENUM(name, value, text) name = value,
 enum class EventKind : std::uint8_t { EDE_EVENT_KINDS(EDE_EVENT_KIND_ENUM) };
@@ -66,9 +69,9 @@ struct EventCounts {
   std::uint64_t of(EventKind k) const { return by_kind[static_cast<int>(k)]; }
   std::uint64_t collisions() const { return of(EventKind::Pair) + of(EventKind::Wall) + of(EventKind::Segment); }
   // Processed events: everything but samples and stale predictions (what stop.events counts).
-  std::uint64_t events() const { return events_but_redraws() + of(EventKind::Thermostat); }
-  // The same without the thermostat's redraws: what an engine without a thermostat counts (one load less
-  // in its loop, which asks twice per event).
+  std::uint64_t events() const { return events_but_redraws() + of(EventKind::Thermostat) + of(EventKind::Shear); }
+  // The same without the thermostat's redraws and the sliding boundary's crossings: what an engine without
+  // either counts (one load less in its loop, which asks twice per event).
   std::uint64_t events_but_redraws() const {
     return of(EventKind::Pair) + of(EventKind::Wall) + of(EventKind::Cell) + of(EventKind::Wrap) +
            of(EventKind::Action) + of(EventKind::Segment) + of(EventKind::Step);
@@ -102,8 +105,8 @@ struct Event {
   Time time = 0;
   EventKind kind = EventKind::Pair;
   std::int32_t i = -1;  // the disk (pair: the lower id); -1 for an action
-  std::int32_t j = -1;  // pair, step: the other disk; wall: WallId; wrap: WrapDir; segment: its index; action: -1
-  // Positions of i and j at the event (a wrap: i's position after it moved by one box length).
+  std::int32_t j = -1;  // pair, step: the other disk; wall: WallId; wrap, shear: WrapDir; segment: its index; action: -1
+  // Positions of i and j at the event (a wrap, a shear crossing: i's position after it moved).
   Time xi = 0, yi = 0, xj = 0, yj = 0;
   // Velocities just before and just after the event (pair: both disks; wall, segment: i; wrap: i's, unchanged).
   Time vix_before = 0, viy_before = 0, vjx_before = 0, vjy_before = 0;

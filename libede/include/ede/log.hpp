@@ -49,6 +49,7 @@ struct LogInfo {
   std::vector<std::uint64_t> species_counts;  // disks per species
   double lx = 1, ly = 1;
   BoundaryKind boundary = BoundaryKind::Walls;
+  bool lees_edwards = false;           // periodic with sliding images above and below (scene().shear_rate)
   bool rotates = false;                // rough or spinning disks: states and events carry omega
   bool tc_model = false;
   double gx = 0, gy = 0;

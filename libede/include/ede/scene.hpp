@@ -230,6 +230,9 @@ struct Scene {
   std::uint64_t seed = 1;
   double lx = 1, ly = 1;
   BoundaryKind boundary = BoundaryKind::Walls;
+  // box.boundary = "lees-edwards": a periodic box (boundary is Periodic) whose images above and below slide
+  // in x with velocity +-shear_rate * ly (docs/physics.md, "Lees-Edwards shear"). Absent: not sheared.
+  std::optional<double> shear_rate;
   PhysicsSpec physics;
   ScalarKind scalar = ScalarKind::Double;
   // Engine events between rebuilds of every prediction from the state alone: the points a run can be
@@ -252,6 +255,8 @@ struct Scene {
     for (const SpeciesSpec& s : species) any = any || s.spin.kind != SpinSpec::Kind::Zero;
     return any;
   }
+  // The box has Lees-Edwards (sliding) images above and below: box.boundary = "lees-edwards".
+  bool sheared() const { return shear_rate.has_value(); }
   // Some disks are thermostatted: [thermostat], or a species' own with a rate above 0.
   bool thermostatted() const {
     bool any = physics.thermostat.has_value();

@@ -112,6 +112,10 @@ std::string refusal(const Log& log) {
     return "the box has walls, which exchange momentum with the gas, so its stress fluctuations do not give "
            "the bulk viscosity; run the gas in a periodic box (box.boundary = \"periodic\")";
   if (info.gx != 0 || info.gy != 0) return "the run is under gravity: no homogeneous equilibrium; run without gravity";
+  if (info.lees_edwards)
+    return "the box is sheared (Lees-Edwards): the kinetic stress needs the flow subtracted and the impulses the "
+           "sliding image, which this analysis does not do yet; measure the viscosity of an equilibrium run in a "
+           "periodic box";
   if (info.rotates)
     return "the disks are rough or spin: their stress has an antisymmetric part coupled to the spins, which this "
            "analysis does not treat; use smooth disks";

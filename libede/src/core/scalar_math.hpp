@@ -49,6 +49,9 @@ template <std::floating_point T>
 inline T abs(T x) { return std::abs(x); }
 template <std::floating_point T>
 inline T floor(T x) { return std::floor(x); }
+// The remainder of x / y with the sign of x, computed exactly (IEEE fmod rounds nothing).
+template <std::floating_point T>
+inline T fmod(T x, T y) { return std::fmod(x, y); }
 
 #if EDE_HAVE_FLOAT128
 template <>
@@ -61,6 +64,7 @@ struct scalar_limits<__float128> {
 inline __float128 sqrt(__float128 x) { return sqrtq(x); }
 inline __float128 abs(__float128 x) { return fabsq(x); }
 inline __float128 floor(__float128 x) { return floorq(x); }
+inline __float128 fmod(__float128 x, __float128 y) { return fmodq(x, y); }
 #endif
 
 }  // namespace ede

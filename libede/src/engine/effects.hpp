@@ -1,7 +1,7 @@
 // Effects: the small policy types an Engine is instantiated with, one axis per kind of physics a scene
-// can switch on: Boundary, Dissipation, Field, Contact (the pair root), Walls (segments), Spin, Potential
+// can switch on: Boundary (walls, periodic, Lees-Edwards), Dissipation, Field, Contact (the pair root), Walls (segments), Spin, Potential
 // (square wells and shoulders) and Heat (the thermostat), eight axes; the engine table (engine_factory.hpp)
-// builds thirteen combinations per scalar type.
+// builds fourteen combinations per scalar type.
 //
 // The engine branches on them with `if constexpr`, so code for an effect a scene does not use is not
 // compiled into that scene's engine: an elastic gas has no restitution, no TC bookkeeping, no energy
@@ -16,6 +16,7 @@
 #pragma once
 
 #include "core/geometry.hpp"
+#include "engine/lees_edwards.hpp"
 #include "engine/restitution.hpp"
 #include "engine/roughness.hpp"
 #include "engine/segment_walls.hpp"
@@ -24,13 +25,32 @@
 
 namespace ede {
 
+// The box's edges: walls, periodic, or periodic with the images above and below sliding (Lees-Edwards,
+// lees_edwards.hpp), whose state is the slide's speed and the clock that realigns the boundary rows' scans.
 struct WallsBoundary {
   static constexpr bool kPeriodic = false;
+  static constexpr bool kSheared = false;
   static constexpr const char* kName = "walls";
+  template <class T>
+  using State = NoShear;
 };
 struct PeriodicBoundary {
   static constexpr bool kPeriodic = true;
+  static constexpr bool kSheared = false;
   static constexpr const char* kName = "periodic";
+  template <class T>
+  using State = NoShear;
+};
+// Lees-Edwards: periodic in x; crossing the top or bottom edge is a shear event (room_shear.hpp), and pairs
+// across it meet the sliding image. Sheared engines are Dissipative (a sheared granular gas is the steady
+// state the heating needs; xi = 1 computes exactly what Elastic does), without gravity, segments, rotation,
+// steps or the thermostat (refused by the scene).
+struct LeesEdwardsBoundary {
+  static constexpr bool kPeriodic = true;
+  static constexpr bool kSheared = true;
+  static constexpr const char* kName = "lees-edwards";
+  template <class T>
+  using State = ShearClock<T>;
 };
 
 // Every collision elastic: the impulse 2 (dv.n) / (m_i + m_j), walls mirror the velocity.

@@ -64,12 +64,17 @@ struct EngineOptions {
   // and the scene's seed, from which its draws are made (room_thermostat.hpp).
   std::vector<SpeciesThermostat> species_thermostats;
   std::uint64_t seed = 1;
+  // A Lees-Edwards box (boundary Periodic, Scene::shear_rate): the images above and below slide in x at
+  // +-shear_rate * ly (lees_edwards.hpp). Absent: an ordinary periodic or walled box.
+  std::optional<double> shear_rate;
 };
 
 // The TC model is on when a scene dissipates and sets tc > 0 (an elastic scene's tc changes nothing).
 inline bool uses_tc_model(const PhysicsSpec& ph) { return ph.tc > 0 && !ph.elastic(); }
 // A run needs a rough engine: the disks spin, or some contact is rough.
 inline bool uses_rotation(const EngineOptions& o) { return o.rotation || o.physics.rough(); }
+// A run needs the sheared engine: a Lees-Edwards box.
+inline bool uses_shear(const EngineOptions& o) { return o.shear_rate.has_value(); }
 // A run needs a thermostat engine: [thermostat], or some species' own with a rate above 0.
 inline bool uses_thermostat(const EngineOptions& o) {
   bool any = o.physics.thermostat.has_value();
@@ -145,6 +150,7 @@ enum class EngineKind {
   WallsGravitySteps,    // a stepped potential under gravity (walls)
   PeriodicThermostat,   // the Andersen thermostat, periodic box, elastic or not
   WallsThermostat,      // the Andersen thermostat, walled box (no gravity, no segments, no rotation)
+  Sheared,              // a Lees-Edwards box (sliding images above and below), elastic or not
 };
 const char* to_string(EngineKind kind);  // "walls, dissipative", ...
 

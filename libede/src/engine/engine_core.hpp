@@ -2,7 +2,8 @@
 // engine, one instantiation per set of effects (eight axes, effects.hpp; the instantiations that exist:
 // engine_factory.hpp).
 //
-// The loop: take the earliest of (next disk event, next sample, next action, next thermostat redraw, stop time); for a disk event,
+// The loop: take the earliest of (next disk event, next sample, next action, next thermostat redraw, next
+// realignment of a Lees-Edwards box's sliding rows, stop time); for a disk event,
 // discard it if its partner changed since it was predicted (collision counters), else hand it to the room of
 // its kind, which brings the disks involved to the event time (lazy state: nobody else moves), resolves it,
 // tells the sinks and re-predicts those disks only. Each disk holds one prediction (its earliest collision,
@@ -12,7 +13,7 @@
 // (big_disks.hpp), so they do not set the cell size for everyone.
 // This class is the loop and the set-up; the rest lives in rooms over its state (engine_state.hpp): one per
 // event kind (room_pair, room_wall, room_segment, room_crossing, room_wrap, room_action, room_step,
-// room_thermostat), the predictions
+// room_thermostat, room_shear), the predictions
 // (predict_disk), the stops (stops), the invariants (invariants) and the prefetch (prefetch). Adding an
 // event kind is its value in EDE_EVENT_KINDS (ede/events.hpp), its room, and its line in resolve() below.
 // Rejected: storing every predicted pair event (the queue grows with density and fills with stale events)
@@ -40,6 +41,7 @@
 #include "engine/room_crossing.hpp"
 #include "engine/room_pair.hpp"
 #include "engine/room_segment.hpp"
+#include "engine/room_shear.hpp"
 #include "engine/room_thermostat.hpp"
 #include "engine/room_step.hpp"
 #include "engine/room_wall.hpp"
@@ -69,6 +71,7 @@ class Engine final : public EngineApi<T> {
     if constexpr (Fx::kSteps) s.steps.setup(init.species_names, options.physics, init.size());
     if constexpr (Fx::kThermostat)
       s.thermostat.setup(init.species_names, init.species, options.physics, options.species_thermostats, options.seed);
+    if constexpr (Fx::kSheared) s.shear.setup(options.shear_rate.value_or(0), s.lx, s.ly, shape.nx);
     if constexpr (Fx::kGravity) {
       s.field.gx = s.p.gx = T(options.physics.gravity[0]);
       s.field.gy = s.p.gy = T(options.physics.gravity[1]);
@@ -80,7 +83,7 @@ class Engine final : public EngineApi<T> {
     s.prefetch_ahead = init.size() >= options.prefetch_upcoming_from;
     s.grid.reset(shape.nx, shape.ny, s.lx, s.ly, s.p.disk);
     find_big_disks(s, init, shape.split);
-    s.pair_times_vouchable = std::is_same_v<Contact, StableContact> && s.big.empty() && !Fx::kSteps &&
+    s.pair_times_vouchable = std::is_same_v<Contact, StableContact> && s.big.empty() && !Fx::kSteps && !Fx::kSheared &&
                              (!Fx::kPeriodic || (s.grid.nx() >= 5 && s.grid.ny() >= 5));
     if constexpr (Fx::kSegments) setup_segments(s, options.physics, init, shape);
     s.queue.reset(static_cast<std::uint32_t>(s.p.size()));
@@ -109,6 +112,7 @@ class Engine final : public EngineApi<T> {
     const PhysicsSpec& ph = s_.opt.physics;
     std::ostringstream o;
     o << Boundary::kName << ", ";
+    if constexpr (Fx::kSheared) o << "shear rate " << s_.opt.shear_rate.value_or(0) << ", ";
     if (Fx::kDissipative && !ph.elastic()) {
       o << "inelastic (xi=" << ph.restitution;
       if (!ph.pairs.empty()) o << ", " << ph.pairs.size() << " species pairs apart";
@@ -173,15 +177,16 @@ class Engine final : public EngineApi<T> {
       const T t_action = next_action_time(s);
       const T t_stop = s.stop_time;
       const T t_heat = thermostat_time(s);  // a constant never without the thermostat: its tests fold away
+      const T t_align = realign_time(s);     // likewise without the sliding edges of a Lees-Edwards box
       if (next.time <= t_sample && next.time <= t_action && next.time <= t_limit && next.time != kNever<T> &&
-          (!Fx::kThermostat || next.time <= t_heat)) {
+          (!Fx::kThermostat || next.time <= t_heat) && (!Fx::kSheared || next.time <= t_align)) {
         if (!process_disk_event(next)) continue;  // stale prediction: not an event
         ++done;
         if (s.counts.of(EventKind::Pair) >= s.schedule.next_pair_target) done += on_pair_target(s);
         if (const RunStatus st = check_stops(s); st != RunStatus::Running) return finish(st);
         if (s.opt.rebuild_interval && s.events_done() % s.opt.rebuild_interval == 0) rebuild_predictions(s);
       } else if (t_action != kNever<T> && t_action <= t_sample && t_action <= t_limit &&
-                 (!Fx::kThermostat || t_action <= t_heat)) {
+                 (!Fx::kThermostat || t_action <= t_heat) && (!Fx::kSheared || t_action <= t_align)) {
         // Everything that happens at time <= t, actions included, happens before an observer looks at t.
         reverse_velocities(s, t_action);
         ++done;
@@ -192,6 +197,8 @@ class Engine final : public EngineApi<T> {
         ++done;
         if (const RunStatus st = check_stops(s); st != RunStatus::Running) return finish(st);
         if (s.opt.rebuild_interval && s.events_done() % s.opt.rebuild_interval == 0) rebuild_predictions(s);
+      } else if (Fx::kSheared && t_align != kNever<T> && t_align <= t_sample && t_align <= t_limit) {
+        realign_sliding_rows(s, t_align);  // bookkeeping, not an event: not counted
       } else if (t_sample != kNever<T> && t_sample <= t_limit &&
                  !frozen_after(s, t_sample, std::min(next.time, t_heat), t_action, t_stop)) {
         take_sample(s, t_sample);
@@ -248,6 +255,9 @@ class Engine final : public EngineApi<T> {
       resolve_step(s, i, pr.partner_id());
     else if constexpr (K == EventKind::Cell)
       cross_cell(s, i, pr.cross_dir(), EventKind::Cell);
+    else if constexpr (K == EventKind::Wrap && Fx::kSheared)  // through the top or bottom: the sliding edge
+      pr.cross_dir() == kCrossUp || pr.cross_dir() == kCrossDown ? resolve_shear(s, i, pr.cross_dir())
+                                                                 : resolve_wrap(s, i, pr.cross_dir());
     else if constexpr (K == EventKind::Wrap && Fx::kPeriodic)
       resolve_wrap(s, i, pr.cross_dir());
   }

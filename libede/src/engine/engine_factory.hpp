@@ -14,14 +14,17 @@
 //   WallsGravitySteps    walls     Dissipative  UniformGravity  a stepped potential under gravity
 //   PeriodicThermostat   periodic  Dissipative  NoField         the Andersen thermostat (Andersen), periodic box
 //   WallsThermostat      walls     Dissipative  NoField         the Andersen thermostat (Andersen), walled box
+//   Sheared              lees-edw. Dissipative  NoField         a Lees-Edwards box (sliding images), elastic or not
 //
 // The three stepped ones carry the step table and the step room (square wells and shoulders); no other
 // scene's engine has them compiled in. A scene with both steps and a thermostat is refused by the scene
 // loader (no engine combines the two axes).
-// Thirteen per scalar type (eight before the stepped potential and the thermostat): make_engine_as<T> below
-// names them all, and engine_float.cpp, engine_double.cpp,
+// The sheared one has the sliding edges' room and realignment clock (room_shear.hpp); no other scene's
+// engine has them compiled in.
+// Fourteen per scalar type (eight before the stepped potential, the thermostat and Lees-Edwards):
+// make_engine_as<T> below names them all, and engine_float.cpp, engine_double.cpp,
 // engine_long_double.cpp (and engine_float128.cpp where EDE_HAVE_FLOAT128) instantiate it once each, so
-// 52 engines (39 without __float128). The two thermostat ones have a clock the loop compares with and a
+// 56 engines (42 without __float128). The two thermostat ones have a clock the loop compares with and a
 // room of their own; every other scene's loop has neither. The two rough ones carry omega and the tangential impulse; every
 // other scene's engine has neither compiled in. Why not fewer: the elastic gas is what the speed targets are about,
 // and it must not pay for restitution, energy accounting or TC (Elastic), for walls in a periodic box
@@ -103,6 +106,9 @@ Result<std::unique_ptr<EngineApi<T>>> make_engine_as(EngineKind kind, const Init
       e = std::make_unique<
           Engine<T, PeriodicBoundary, Dissipative, NoField, StableContact, NoSegments, Smooth, HardCore, Andersen>>(
           init, o, shape, resume);
+      break;
+    case EngineKind::Sheared:
+      e = std::make_unique<Engine<T, LeesEdwardsBoundary, Dissipative>>(init, o, shape, resume);
       break;
     case EngineKind::WallsThermostat:
       e = std::make_unique<

@@ -69,12 +69,15 @@ const char* to_string(EngineKind k) {
     case EngineKind::WallsGravitySteps: return "walls, gravity, stepped";
     case EngineKind::PeriodicThermostat: return "periodic, thermostat";
     case EngineKind::WallsThermostat: return "walls, thermostat";
+    case EngineKind::Sheared: return "lees-edwards";
   }
   return "?";
 }
 
 EngineKind engine_kind_for(const EngineOptions& o) {
   const bool elastic = o.physics.elastic();
+  // A Lees-Edwards box has one engine; the scene loader refuses what it lacks (thermostat, steps, rotation).
+  if (uses_shear(o)) return EngineKind::Sheared;
   // No engine has both a thermostat and steps: the scene loader refuses such a scene.
   if (uses_thermostat(o))
     return o.boundary == BoundaryKind::Periodic ? EngineKind::PeriodicThermostat : EngineKind::WallsThermostat;
@@ -99,6 +102,9 @@ bool engine_can_run(EngineKind k, const EngineOptions& o) {
   const bool stepped_kind =
       k == EngineKind::PeriodicSteps || k == EngineKind::WallsSteps || k == EngineKind::WallsGravitySteps;
   if (steps != stepped_kind) return false;
+  // A Lees-Edwards box only in the sheared engine, and that engine only for one: an unsheared periodic
+  // scene there would log its vertical wraps as shear events (nothing compares the two: not offered).
+  if (uses_shear(o) != (k == EngineKind::Sheared)) return false;
   switch (k) {
     case EngineKind::PeriodicElastic: return periodic && !gravity && elastic && !segments && !rough && !heat;
     case EngineKind::PeriodicDissipative: return periodic && !gravity && !segments && !rough && !heat;
@@ -117,6 +123,7 @@ bool engine_can_run(EngineKind k, const EngineOptions& o) {
     // clock is never due), which is what ede-bench effects compares. Steps are kept out above.
     case EngineKind::PeriodicThermostat: return periodic && !gravity && !segments && !rough;
     case EngineKind::WallsThermostat: return !periodic && !gravity && !segments && !rough;
+    case EngineKind::Sheared: return periodic && !gravity && !segments && !rough && !heat;
   }
   return false;
 }
@@ -136,6 +143,7 @@ EngineOptions engine_options_from(const Scene& scene, std::size_t disks) {
   o.actions = scene.actions;
   o.rotation = scene.rotates();
   o.seed = scene.seed;
+  o.shear_rate = scene.shear_rate;
   for (const SpeciesSpec& sp : scene.species)
     if (sp.thermostat) o.species_thermostats.push_back({sp.name, sp.thermostat->temperature, sp.thermostat->rate});
   return o;

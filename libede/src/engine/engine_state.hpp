@@ -51,6 +51,7 @@ struct EffectSet {
   static constexpr bool kRough = Spin::kRough;
   static constexpr bool kSteps = Potential::kSteps;
   static constexpr bool kThermostat = Heat::kThermostat;
+  static constexpr bool kSheared = Boundary::kSheared;
   static_assert(!kRough || (kDissipative && !kGravity && !kSegments),
                 "rough disks run in a dissipative engine without gravity or segments");
   static_assert(!kSegments || (!kPeriodic && !kGravity), "segments need walls and no gravity");
@@ -58,6 +59,9 @@ struct EffectSet {
                 "stepped potentials run in a dissipative engine without rough disks or segments");
   static_assert(!kThermostat || (kDissipative && !kGravity && !kSegments && !kRough && !kSteps),
                 "the thermostat runs in a dissipative engine without gravity, segments, rotation or steps");
+  static_assert(!kSheared || (kDissipative && !kGravity && !kSegments && !kRough && !kSteps && !kThermostat),
+                "a Lees-Edwards box runs in a dissipative engine without gravity, segments, rotation, steps or "
+                "the thermostat");
 };
 
 // When the run stops, and what happens at times other than disk events (stops.hpp).
@@ -105,6 +109,7 @@ struct EngineState {
   [[no_unique_address]] typename Fx::Spin::template State<T> spin;
   [[no_unique_address]] typename Fx::Potential::template State<T> steps;
   [[no_unique_address]] typename Fx::Heat::template State<T> thermostat;
+  [[no_unique_address]] typename Fx::Boundary::template State<T> shear;
 
   // Position and velocity of a disk at now: straight lines, or parabolas under gravity.
   Position2<T> pos_at(const Disk<T>& d) const {
@@ -141,9 +146,9 @@ struct EngineState {
       return false;
   }
 
-  // counts.events(), without the thermostat's always-zero term where the engine has none.
+  // counts.events(), without the thermostat's and the shear's always-zero terms where the engine has neither.
   std::uint64_t events_done() const {
-    if constexpr (Fx::kThermostat)
+    if constexpr (Fx::kThermostat || Fx::kSheared)
       return counts.events();
     else
       return counts.events_but_redraws();
@@ -188,6 +193,23 @@ template <class S, class T = typename S::Scalar>
     if (dx > s.half_lx) dx -= s.lx; else if (dx < -s.half_lx) dx += s.lx;
     if (dy > s.half_ly) dy -= s.ly; else if (dy < -s.half_ly) dy += s.ly;
   }
+}
+
+// The same in a Lees-Edwards box, where the nearest image of b across the top or bottom edge is slid by
+// the images' offset now and moves at +-u: svx is that image's x-velocity less b's own (0 within the box).
+// Returns whether b's image lies across that edge. Without the crossing it computes what separation does.
+template <class S, class T = typename S::Scalar>
+inline bool sheared_separation(const S& s, const Disk<T>& a, const Disk<T>& b, T& dx, T& dy, T& svx) {
+  dx = b.x - a.x, dy = b.y - a.y, svx = 0;
+  bool across = false;
+  if (dy > s.half_ly) {  // b's image below: shifted by (-offset, -ly), moving at -u
+    dy -= s.ly, dx -= s.shear.offset(s.now, s.lx), svx = -s.shear.slide, across = true;
+  } else if (dy < -s.half_ly) {
+    dy += s.ly, dx += s.shear.offset(s.now, s.lx), svx = s.shear.slide, across = true;
+  }
+  for (int k = 0; k < 2; ++k)  // dx within (-2 lx, 2 lx)
+    if (dx > s.half_lx) dx -= s.lx; else if (dx < -s.half_lx) dx += s.lx;
+  return across;
 }
 
 // Every disk's prediction rebuilt from the state alone (predict_disk.hpp); `notify`: the sinks see the point.

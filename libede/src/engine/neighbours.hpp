@@ -33,10 +33,46 @@ template <class S, class F>
     if (k != i) f(k, sx, sy);
 }
 
-// f(k, shift_x, shift_y) for every disk k != i in the 3 x 3 cells around `cell`.
+// A Lees-Edwards box (lees_edwards.hpp): f(k, shift_x, shift_y, shift_vx) for every disk k != i that disk i
+// in cell (cx, cy) can meet before the boundary rows are next realigned: the 3 x 3 cells within the box's
+// rows (wrapped in x), and beyond the top (bottom) edge the bottom (top) row slid by +offset (-offset) and
+// moving at +u (-u): there the six columns whose slid images overlap columns cx - 1 .. cx + 1 for any
+// alignment from one cell before the offset's column to two after it (the realignment comes after half a
+// cell). shift_x places k's image, shift_vx is its velocity less k's own.
+template <class S, class F>
+void for_each_sheared_neighbour(const S& s, std::int32_t i, std::int32_t cx, std::int32_t cy, F&& f) {
+  using T = typename S::Scalar;
+  const std::int32_t nx = s.grid.nx(), ny = s.grid.ny();
+  for (std::int32_t row = cy - 1; row <= cy + 1; ++row) {
+    if (row >= 0 && row < ny) {
+      for (std::int32_t c = cx - 1; c <= cx + 1; ++c)
+        visit_cell(s, i, c, row, [&](std::int32_t k, T sx, T sy) { f(k, sx, sy, T(0)); });
+      continue;
+    }
+    const bool above = row == ny;
+    const T offset = s.shear.offset(s.now, s.lx);
+    const std::int32_t q = s.shear.column_of(offset, nx);
+    const std::int32_t first = above ? cx - q - 3 : cx + q - 2;
+    const T sy = above ? s.ly : -s.ly, svx = above ? s.shear.slide : -s.shear.slide;
+    for (std::int32_t u = first; u < first + 6; ++u) {
+      const std::int32_t m = u >= 0 ? u / nx : -((nx - 1 - u) / nx);  // floor(u / nx)
+      const T sx = (above ? offset : -offset) + T(m) * s.lx;
+      for (std::int32_t k = s.grid.head(s.grid.cell_at(u - m * nx, above ? 0 : ny - 1)); k != CellGrid<T>::kNone;
+           k = s.grid.next(k))
+        if (k != i) f(k, sx, sy, svx);
+    }
+  }
+}
+
+// f(k, shift_x, shift_y) for every disk k != i in the 3 x 3 cells around `cell` (in a Lees-Edwards box, the
+// cells for_each_sheared_neighbour visits).
 template <class S, class F>
 void for_each_neighbour(const S& s, std::int32_t i, std::int32_t cell, F&& f) {
   const std::int32_t cx = s.grid.cell_x(cell), cy = s.grid.cell_y(cell);
+  if constexpr (S::Effects::kSheared) {
+    using T = typename S::Scalar;
+    return for_each_sheared_neighbour(s, i, cx, cy, [&](std::int32_t k, T sx, T sy, T) { f(k, sx, sy); });
+  }
   for (std::int32_t dy = -1; dy <= 1; ++dy)
     for (std::int32_t dx = -1; dx <= 1; ++dx) visit_cell(s, i, cx + dx, cy + dy, f);
 }

@@ -10,6 +10,7 @@
 #include "engine/room_crossing.hpp"
 #include "engine/room_pair.hpp"
 #include "engine/room_segment.hpp"
+#include "engine/room_shear.hpp"
 #include "engine/room_thermostat.hpp"
 #include "engine/room_wall.hpp"
 
@@ -61,6 +62,7 @@ void rebuild_predictions(S& s, bool notify) {
   for (std::size_t i = 0; i < s.p.size(); ++i) predict_disk(s, std::int32_t(i));
   if constexpr (S::Effects::kDissipative) s.dissipation.ke = kinetic_energy(s.p);
   restart_thermostat_clock(s);
+  restart_realign_clock(s);
   if (!notify) return;
   const RebuildPoint<T> point{s.now,
                               s.p,

@@ -74,6 +74,8 @@ void cross_cell(S& s, std::int32_t i, CrossDir dir, EventKind kind) {
     s.grid.move(i, s.grid.cell_at(cx, cy));
   }
   ++s.counts.by_kind[int(kind)];
+  if constexpr (S::Effects::kSheared)
+    if (cy == 0 || cy == s.grid.ny() - 1) return predict_disk(s, i);  // the slid row: no strip of new cells
 
   Prediction<T>& pr = s.pred[i];
   Candidate<T> best{pr.t_coll, pr.coll_kind(), pr.partner()};

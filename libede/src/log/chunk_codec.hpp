@@ -182,9 +182,10 @@ class ChunkEncoder {
   void add_v2(const CodedEvent<T>& e) {
     kinds_.byte(static_cast<unsigned char>(static_cast<unsigned char>(e.kind) | (e.tc_elastic ? kTcElasticFlag : 0)));
     if (pair_like(e.kind) || e.kind == EventKind::Wall || e.kind == EventKind::Wrap ||
-        e.kind == EventKind::Segment)
+        e.kind == EventKind::Segment || e.kind == EventKind::Shear)
       add_ids(e);
     if (e.kind == EventKind::Thermostat) add_redrawn(e);
+    if (e.kind == EventKind::Shear) add_scalar(e.v[0]), add_scalar(e.v[1]);  // x', vx' (FORMAT.md)
     add_time_v2(e.time, e.predicted_time);
     const int velocities = pair_like(e.kind) ? 4 : e.kind == EventKind::Wall || e.kind == EventKind::Segment ? 2 : 0;
     const int spins = !rough_ ? 0 : e.kind == EventKind::Pair ? 2 : e.kind == EventKind::Wall ? 1 : 0;
@@ -226,6 +227,11 @@ class ChunkEncoder {
         disks = put_varint(disks, std::uint64_t(std::uint32_t(e.i)));
         const std::int64_t d = std::int64_t(e.j) - std::int64_t(e.i);
         partners = put_varint(partners, (std::uint64_t(d) << 1) ^ std::uint64_t(d >> 63));
+      } else if (e.kind == EventKind::Shear) {  // as a wrap, then x' and vx' as they are
+        disks = put_varint(disks, std::uint64_t(std::uint32_t(e.i)));
+        partners = put_varint(partners, std::uint64_t(std::uint32_t(e.j)));
+        add_scalar(e.v[0]);
+        add_scalar(e.v[1]);
       }
       times = put_varint(times, time_code(e.time, e.predicted_time, previous));
       const int velocities = e.kind == EventKind::Pair                                   ? 4
@@ -441,6 +447,12 @@ template <class T>
       Disk<T>& a = p.disk[std::size_t(e.i)];
       rules::wrap(a, e.time, e.j, lx, ly);
       return finite_record(a);
+    }
+    case EventKind::Shear: {  // a wrap through the top or bottom, then the stored x and vx (FORMAT.md)
+      Disk<T>& a = p.disk[std::size_t(e.i)];
+      rules::wrap(a, e.time, e.j, lx, ly);
+      a.x = e.xi, a.vx = e.vix;
+      return finite_record(a) && std::isfinite(double(a.vx));
     }
     case EventKind::Action: {
       bool ok = true;

@@ -137,7 +137,8 @@ bool ChunkDecoder<T>::read_kind(DecodedEvent<T>& e) {
   e.kind = static_cast<EventKind>(k);
   const bool known = e.kind == EventKind::Pair || e.kind == EventKind::Wall || e.kind == EventKind::Wrap ||
                      e.kind == EventKind::Action || e.kind == EventKind::Segment ||
-                     ((e.kind == EventKind::Step || e.kind == EventKind::Thermostat) && encoding_ >= 3);
+                     ((e.kind == EventKind::Step || e.kind == EventKind::Thermostat || e.kind == EventKind::Shear) &&
+                      encoding_ >= 3);
   if (!known) return fail("unknown event kind " + std::to_string(kind));
   if (e.tc_elastic && e.kind != EventKind::Pair && e.kind != EventKind::Wall && e.kind != EventKind::Segment)
     return fail("a TC flag on an event that is not a collision");
@@ -178,6 +179,13 @@ bool ChunkDecoder<T>::read_ids(DecodedEvent<T>& e) {
       return true;
     }
     case EventKind::Thermostat: return read_disk(disks_, e.i);
+    case EventKind::Shear: {  // encoding 3: a crossing of the top (2) or bottom (3) edge
+      u128 dir;
+      if (!read_disk(disks_, e.i)) return false;
+      if (!partners_.varint(dir, 8) || dir < 2 || dir > 3) return fail("a shear direction is missing or out of range");
+      e.j = std::int32_t(dir);
+      return true;
+    }
     case EventKind::Wrap: {
       u128 dir;
       if (!read_disk(disks_, e.i)) return false;
@@ -282,6 +290,10 @@ bool ChunkDecoder<T>::read_v2(const Particles<T>& p, DecodedEvent<T>& e) {
     return read_residual(v[0], e.vix) && read_residual(v[1], e.viy);
   }
   if (e.kind == EventKind::Thermostat) return read_scalar(e.vix) && read_scalar(e.viy);
+  if (e.kind == EventKind::Shear) {  // the new x (in xi) and vx as they are; vy unchanged
+    e.viy = vy_at(p, e.i, e.time);
+    return read_scalar(e.xi) && read_scalar(e.vix);
+  }
   return true;
 }
 

@@ -55,6 +55,11 @@ class EventCoder {
       c.velocities_predicted = false;
       return c;
     }
+    if (e.kind == EventKind::Shear) {  // version 3: the new x (the outcome's vjx) and vx, stored as they are
+      c.v[0] = e.vjx, c.v[1] = e.vix;
+      c.velocities_predicted = false;
+      return c;
+    }
     if (e.kind == EventKind::Step) return code_step(e, c);
     if (!collision(e.kind)) return c;
     if (velocities_exact) {

@@ -208,7 +208,8 @@ inline T predicted_event_time(const EventPhysics<T>& ph, EventKind kind, const R
   switch (kind) {
     case EventKind::Pair: return predict_pair_time(ph, a, b);
     case EventKind::Wall: return predict_wall_time(ph, a, j);
-    case EventKind::Wrap: return predict_wrap_time(ph, a, j);
+    case EventKind::Wrap:
+    case EventKind::Shear: return predict_wrap_time(ph, a, j);  // version 3: reaching the top or bottom edge
     case EventKind::Segment: return predict_segment_time(ph, a, j);
     default: return rules::v2::kNever<T>;
   }

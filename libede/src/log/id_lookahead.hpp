@@ -59,7 +59,7 @@ class IdLookahead {
       return true;
     }
     if (kind != EventKind::Pair && kind != EventKind::Wall && kind != EventKind::Wrap && kind != EventKind::Segment &&
-        kind != EventKind::Step)
+        kind != EventKind::Step && kind != EventKind::Shear)
       return true;  // actions carry no ids
     u128 disk, partner;
     if (!disks_.varint(disk, 32) || !partners_.varint(partner, 33)) return on_ = false;

@@ -238,7 +238,9 @@ Status LogReader::read_header_record(std::uint64_t offset, std::uint64_t payload
     for (const auto name : h.getSpeciesNames()) out.species_names.emplace_back(name);
     out.lx = h.getBoxX();
     out.ly = h.getBoxY();
-    out.boundary = h.getBoundary() == logschema::Boundary::PERIODIC ? BoundaryKind::Periodic : BoundaryKind::Walls;
+    out.lees_edwards = h.getBoundary() == logschema::Boundary::LEES_EDWARDS;
+    out.boundary = h.getBoundary() == logschema::Boundary::PERIODIC || out.lees_edwards ? BoundaryKind::Periodic
+                                                                                         : BoundaryKind::Walls;
     out.chunk_events = h.getChunkEvents();
     out.keyframe_interval = h.getKeyframeInterval();
     out.rebuild_interval = h.getRebuildInterval();

@@ -29,6 +29,7 @@ struct LogHeaderInfo {
   std::vector<std::string> species_names;
   double lx = 1, ly = 1;
   BoundaryKind boundary = BoundaryKind::Walls;
+  bool lees_edwards = false;  // format version 3: boundary Periodic with sliding images (the scene's shear rate)
   std::uint32_t chunk_events = 0;
   std::uint64_t keyframe_interval = 0, rebuild_interval = 0;
   std::uint32_t run_id = 0;  // log/run_id.hpp; 0: not recorded (older logs), records are not checked

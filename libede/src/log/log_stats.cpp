@@ -23,7 +23,8 @@ bool loggable(unsigned char kind, std::uint32_t encoding) {
     case EventKind::Action:
     case EventKind::Segment:
     case EventKind::Step: return true;
-    case EventKind::Thermostat: return encoding >= 3;
+    case EventKind::Thermostat:
+    case EventKind::Shear: return encoding >= 3;
     default: return false;
   }
 }

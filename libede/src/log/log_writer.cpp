@@ -328,7 +328,9 @@ struct LogWriter<T>::Impl {
     for (std::size_t k = 0; k < run.species_names.size(); ++k) names.set(std::uint32_t(k), run.species_names[k]);
     h.setBoxX(run.lx);
     h.setBoxY(run.ly);
-    h.setBoundary(run.boundary == BoundaryKind::Periodic ? logschema::Boundary::PERIODIC : logschema::Boundary::WALLS);
+    h.setBoundary(run.shear                                ? logschema::Boundary::LEES_EDWARDS
+                  : run.boundary == BoundaryKind::Periodic ? logschema::Boundary::PERIODIC
+                                                           : logschema::Boundary::WALLS);
     h.setChunkEvents(settings.chunk_events);
     h.setKeyframeInterval(settings.keyframe_interval);
     h.setRebuildInterval(run.rebuild_interval);
@@ -419,7 +421,8 @@ struct LogWriter<T>::Impl {
     if (rebuild) {
       words += message_words_of(4 * n);
       if (!rebuild->particles.last_collision.empty()) words += column;
-      words += kCountedKindsV2 + 3 + (settings.format_version >= 3 ? 1 : 0) + (run.thermostat ? 1 : 0);
+      words += kCountedKindsV2 + 3 + (settings.format_version >= 3 ? 1 : 0) + (run.thermostat || run.shear ? 1 : 0) +
+               (run.shear ? 1 : 0);
     }
     return words;
   }
@@ -433,17 +436,20 @@ struct LogWriter<T>::Impl {
                            [&](std::size_t i) { return p.last_collision[i]; });
     // The six kinds before segments, stale, tc_elastic; then segment events only in runs with segments
     // (FORMAT.md), so the keyframes of every other run keep their bytes; format version 3: segment and
-    // step events, always, and then the thermostat's redraws in a run with the thermostat.
+    // step events, always, then the thermostat's redraws in a run with the thermostat or a Lees-Edwards box,
+    // then the shear events in the latter.
     const bool v3 = settings.format_version >= 3;
     const bool segments = !run.segments.empty() || v3;
-    const bool redraws = v3 && run.thermostat;
-    auto counts = k.initEngineCounts(kCountedKindsV2 + 2 + (segments ? 1 : 0) + (v3 ? 1 : 0) + (redraws ? 1 : 0));
+    const bool redraws = v3 && (run.thermostat || run.shear), shears = v3 && run.shear;
+    auto counts = k.initEngineCounts(kCountedKindsV2 + 2 + (segments ? 1 : 0) + (v3 ? 1 : 0) + (redraws ? 1 : 0) +
+                                     (shears ? 1 : 0));
     for (int c = 0; c < kCountedKindsV2; ++c) counts.set(std::uint32_t(c), r.counts.by_kind[c]);
     counts.set(kCountedKindsV2, r.counts.stale);
     counts.set(kCountedKindsV2 + 1, r.counts.tc_elastic);
     if (segments) counts.set(kCountedKindsV2 + 2, r.counts.of(EventKind::Segment));
     if (v3) counts.set(kCountedKindsV2 + 3, r.counts.of(EventKind::Step));
     if (redraws) counts.set(kCountedKindsV2 + 4, r.counts.of(EventKind::Thermostat));
+    if (shears) counts.set(kCountedKindsV2 + 5, r.counts.of(EventKind::Shear));
     k.setNextSample(r.next_sample_index);
     k.setNextAction(r.next_action_index);
     k.setSameTimeEvents(r.same_time_events);
@@ -494,9 +500,9 @@ Result<std::unique_ptr<LogWriter<T>>> LogWriter<T>::create(const std::string& pa
                                                            const LogSettings& settings,
                                                            const LogContinuation* continuation) {
   if (settings.chunk_events == 0) return Error{"log settings: chunk_events must be positive"};
-  // Step and thermostat events exist in format version 3 only: such a run is written in it whatever its
-  // settings name, so every way to write a log gets it right.
-  if ((run.steps || run.thermostat) && settings.format_version < 3) {
+  // Step, thermostat and shear events exist in format version 3 only: such a run is written in it whatever
+  // its settings name, so every way to write a log gets it right.
+  if ((run.steps || run.thermostat || run.shear) && settings.format_version < 3) {
     LogSettings v3 = settings;
     v3.format_version = 3;
     return create(path, run, v3, continuation);

@@ -58,6 +58,8 @@ struct LogRunInfo {
   std::vector<double> segments;
   // The Andersen thermostat redraws velocities (thermostat events): format version 3 (FORMAT.md).
   bool thermostat = false;
+  // A Lees-Edwards box (boundary Periodic, sliding images): shear events, format version 3 (FORMAT.md).
+  bool shear = false;
   // Rough or spinning disks (EngineOptions::rotation): the header then carries I per disk and 1 + beta, and
   // chunks and keyframes the spins (FORMAT.md, "Rotation"). beta of S x S species pairs, then of the walls.
   bool rotation = false;

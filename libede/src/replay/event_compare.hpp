@@ -27,9 +27,12 @@ std::string exact(T v) {
 }
 
 inline bool has_disk(EventKind k) {
-  return k == EventKind::Pair || k == EventKind::Wall || k == EventKind::Wrap || k == EventKind::Segment;
+  return k == EventKind::Pair || k == EventKind::Wall || k == EventKind::Wrap || k == EventKind::Segment ||
+         k == EventKind::Shear;
 }
-inline bool has_vi(EventKind k) { return k == EventKind::Pair || k == EventKind::Wall || k == EventKind::Segment; }
+inline bool has_vi(EventKind k) {
+  return k == EventKind::Pair || k == EventKind::Wall || k == EventKind::Segment || k == EventKind::Shear;
+}
 
 // An event in words, for reports: "t = 0.25, pair of disks 3 and 17, v_i = (1, 2), v_j = (3, 4)".
 template <class T>
@@ -44,6 +47,7 @@ std::string describe(const ReplayedEvent<T>& e) {
       s += " of disk " + std::to_string(e.i) + " on the " + (known_j ? walls[e.j] : std::to_string(e.j)) + " wall";
       break;
     case EventKind::Wrap:
+    case EventKind::Shear:
       s += " of disk " + std::to_string(e.i) + " across the " + (known_j ? wraps[e.j] : std::to_string(e.j)) + " edge";
       break;
     case EventKind::Segment: s += " of disk " + std::to_string(e.i) + " on wall segment " + std::to_string(e.j); break;

@@ -35,7 +35,7 @@ LogInfo info_of(const LogReader& r) {
   i.species_names = h.species_names;
   i.species_counts.assign(h.species_names.size(), 0);
   for (const std::uint32_t s : h.species) ++i.species_counts[s];  // the reader checked every index
-  i.lx = h.lx, i.ly = h.ly, i.boundary = h.boundary;
+  i.lx = h.lx, i.ly = h.ly, i.boundary = h.boundary, i.lees_edwards = h.lees_edwards;
   i.rotates = h.rotation();
   i.tc_model = h.tc_model, i.gx = h.gx, i.gy = h.gy;
   i.initial_energy = h.initial_energy;

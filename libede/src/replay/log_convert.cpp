@@ -32,6 +32,7 @@ Status convert_as(const std::shared_ptr<const LogReader>& log, const std::string
   run.gx = h.gx, run.gy = h.gy;
   run.rotation = h.rotation();  // the replayed state carries each disk's inertia and spin
   run.thermostat = h.format_version >= 3 && version >= 3;  // thermostat events exist in version 3 only
+  run.shear = h.lees_edwards;
   run.engine_version = h.engine_version, run.compiler = h.compiler, run.compile_flags = h.compile_flags;
   if (version >= 2) {
     auto scene = parse_scene_text(h.scene_text, h.scene_name);
@@ -84,6 +85,7 @@ Status convert_as(const std::shared_ptr<const LogReader>& log, const std::string
     EventOutcome<T> out{r.time, r.kind, false, r.i, r.j, r.vix, r.viy, r.vjx, r.vjy,
                         r.vix0, r.viy0, r.vjx0, r.vjy0, r.wi, r.wj, r.wi0, r.wj0};
     const std::vector<Disk<T>>& now = replay.particles().disk;
+    if (r.kind == EventKind::Shear) out.vjx = now[std::size_t(r.i)].x;  // the outcome carries the new x there
     if (r.i >= 0) out.before_i = record_before(before[std::size_t(r.i)]), before[std::size_t(r.i)] = now[std::size_t(r.i)];
     if (r.kind == EventKind::Pair || r.kind == EventKind::Step)
       out.before_j = record_before(before[std::size_t(r.j)]), before[std::size_t(r.j)] = now[std::size_t(r.j)];
@@ -107,8 +109,8 @@ Status convert_log(const std::shared_ptr<const LogReader>& log, const std::strin
     return Error{"format version " + std::to_string(version) + " is not one this ede writes (1, 2 or 3)"};
   if (log->header().format_version >= 3 && version < 3)
     return Error{log->path() + ": a log of format version 3 (a stepped potential's step events, the thermostat's "
-                 "redraws) cannot be written in format version " + std::to_string(version) +
-                 ", which has neither; keep version 3"};
+                 "redraws, a Lees-Edwards box's shear events) cannot be written in format version " +
+                 std::to_string(version) + ", which has none of them; keep version 3"};
   if (log->header().rotation() && version < 2)
     return Error{log->path() + ": a log of rough (rotating) disks cannot be written in format version 1, which has "
                  "no angular velocities; convert it to version 2 (--format-version 2)"};

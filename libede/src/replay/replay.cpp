@@ -109,9 +109,9 @@ Result<KeyframeData<T>> read_keyframe(const LogReader& log, const LogRecordRef& 
         for (std::size_t i = 0; i < n; ++i) k.last_collision[i] = scalar_from_bytes<T>(raw.data() + i * kScalarWidth<T>);
       }
       for (const std::uint64_t c : kf.getEngineCounts()) k.counts.push_back(c);
-      const std::size_t counted = k.counts.size();  // version 3: 10, or 11 with the thermostat (FORMAT.md)
-      if (counted != std::size_t(kCountedKindsV2 + 2) && counted != std::size_t(kCountedKindsV2 + 3) &&
-          counted != std::size_t(kCountedKindsV2 + 4) && counted != std::size_t(kCountedKindsV2 + 5))
+      // Version 3: 10, 11 with the thermostat, 12 in a Lees-Edwards box (FORMAT.md).
+      const std::size_t counted = k.counts.size();
+      if (counted < std::size_t(kCountedKindsV2 + 2) || counted > std::size_t(kCountedKindsV2 + 6))
         return Error{where + ": the engine counters are malformed"};
       k.next_sample = kf.getNextSample();
       k.next_action = kf.getNextAction();
@@ -474,6 +474,8 @@ Result<StoredRebuildPoint<T>> Replay<T>::rebuild_point(std::size_t keyframe) con
     r.counts.by_kind[int(EventKind::Step)] = kf.counts[kCountedKindsV2 + 3];
   if (kf.counts.size() > std::size_t(kCountedKindsV2 + 4))  // format version 3, a run with the thermostat
     r.counts.by_kind[int(EventKind::Thermostat)] = kf.counts[kCountedKindsV2 + 4];
+  if (kf.counts.size() > std::size_t(kCountedKindsV2 + 5))  // format version 3, a Lees-Edwards box
+    r.counts.by_kind[int(EventKind::Shear)] = kf.counts[kCountedKindsV2 + 5];
   r.next_sample_index = kf.next_sample;
   r.next_action_index = kf.next_action;
   r.same_time_events = kf.same_time_events;

@@ -21,6 +21,7 @@ LogRunInfo log_run_info(const Scene& scene, const EngineOptions& options, const 
   r.set_restitution(options.physics);
   r.rotation = uses_rotation(options);
   r.thermostat = uses_thermostat(options);
+  r.shear = uses_shear(options);
   r.steps = options.physics.has_steps();
   r.engine_constants = true;
   return r;

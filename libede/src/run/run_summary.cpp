@@ -81,6 +81,7 @@ std::string to_text(const RunSummary& s) {
     << (c.of(EventKind::Segment) ? ", segment " + std::to_string(c.of(EventKind::Segment)) : std::string())
     << (c.of(EventKind::Step) ? ", step " + std::to_string(c.of(EventKind::Step)) : std::string())
     << (c.of(EventKind::Thermostat) ? ", thermostat " + std::to_string(c.of(EventKind::Thermostat)) : std::string())
+    << (c.of(EventKind::Shear) ? ", shear " + std::to_string(c.of(EventKind::Shear)) : std::string())
     << "); samples " << c.of(EventKind::Sample) << ", stale predictions " << c.stale
     << ", TC-elastic " << c.tc_elastic << "\n"
     << "collisions/disk  " << brief(s.collisions_per_particle) << "\n"
@@ -124,6 +125,7 @@ std::string to_json(const RunSummary& s) {
                          {"action", c.of(EventKind::Action)}};
   if (c.of(EventKind::Segment)) j["events_by_kind"]["segment"] = c.of(EventKind::Segment);
   if (c.of(EventKind::Thermostat)) j["events_by_kind"]["thermostat"] = c.of(EventKind::Thermostat);
+  if (c.of(EventKind::Shear)) j["events_by_kind"]["shear"] = c.of(EventKind::Shear);
   j["samples"] = c.of(EventKind::Sample);
   j["stale_predictions"] = c.stale;
   j["tc_elastic"] = c.tc_elastic;

@@ -22,7 +22,7 @@ constexpr std::string_view kRootKeys[] = {"seed", "box",  "physics",  "engine", 
 constexpr std::string_view kWallsKeys[] = {"segments", "polygons"};
 constexpr std::string_view kSegmentKeys[] = {"from", "to", "restitution"};
 constexpr std::string_view kPolygonKeys[] = {"points", "closed", "restitution"};
-constexpr std::string_view kBoxKeys[] = {"size", "boundary"};
+constexpr std::string_view kBoxKeys[] = {"size", "boundary", "shear_rate"};
 constexpr std::string_view kPhysicsKeys[] = {"restitution", "wall_restitution", "tc", "gravity", "pairs",
                                              "roughness",   "wall_roughness",   "steps"};
 constexpr std::string_view kWallRestitutionKeys[] = {"left", "right", "bottom", "top"};

@@ -51,8 +51,19 @@ void read_box(const Reader& top, Scene& scene) {
       box.numbers("size", 2, "[Lx, Ly]", Bounds::positive()).value_or(std::vector<double>{1, 1});
   scene.lx = size[0];
   scene.ly = size[1];
-  const std::size_t boundary = box.choice("boundary", {"walls", "periodic"}).value_or(0);
+  const std::size_t boundary = box.choice("boundary", {"walls", "periodic", "lees-edwards"}).value_or(0);
   scene.boundary = boundary == 0 ? BoundaryKind::Walls : BoundaryKind::Periodic;
+  // Lees-Edwards: a periodic box whose images above and below slide; the rate is required with it and
+  // means nothing without it.
+  const auto rate = box.number("shear_rate", Bounds::non_negative(),
+                               "give the shear rate (the x-velocity of the image above per unit height), >= 0");
+  if (boundary == 2) {
+    if (!rate) missing(box, "shear_rate", "a Lees-Edwards box slides at a shear rate", "shear_rate = 0.1");
+    scene.shear_rate = *rate;
+  } else if (rate) {
+    box.fail("shear_rate", "only a Lees-Edwards box is sheared",
+             "remove shear_rate, or set box.boundary = \"lees-edwards\"");
+  }
 }
 
 constexpr std::string_view kXiFix = "use a value from 0 (perfectly inelastic) to 1 (elastic)";
@@ -739,6 +750,26 @@ void check_thermostat(const Reader& top, const Scene& scene) {
   if (scene.physics.has_steps()) refuse("square wells or shoulders ([[physics.steps]])");
 }
 
+// A Lees-Edwards box runs in one engine (the sheared one: smooth hard disks, restitution and the TC model
+// allowed); what that engine does not have is refused here, each with its reason. Gravity and wall
+// segments are refused for every periodic box already (check_physics, read_walls).
+void check_shear(const Reader& top, const Scene& scene) {
+  if (!scene.sheared()) return;
+  const Reader box = top.section("box");
+  const auto refuse = [&](std::string_view what, std::string_view fix) {
+    box.fail("boundary", "a Lees-Edwards box with " + std::string(what) + " is not supported yet", fix);
+  };
+  if (scene.thermostatted())
+    refuse("the Andersen thermostat",
+           "remove [thermostat] (an Andersen thermostat about zero velocity would damp the shear flow itself); "
+           "absorb the viscous heating with physics.restitution < 1 instead");
+  if (scene.rotates()) refuse("rough or spinning disks", "make the disks smooth (physics.roughness = -1, no species omega)");
+  if (scene.physics.has_steps()) refuse("square wells or shoulders", "remove [[physics.steps]]");
+  if (!scene.actions.empty())
+    refuse("actions (time reversal does not retrace a sheared run: the images keep sliding the same way)",
+           "remove the [[actions]]");
+}
+
 // [[physics.steps]]: real species, steps outside the hard core of the pair they act on, and not with the
 // effects the stepped engines do not have (rough disks, wall segments).
 void check_steps(const Reader& p, const Scene& scene) {
@@ -799,6 +830,7 @@ void check_physics(const Reader& top, const Scene& scene) {
     p.fail("roughness", "rough or spinning disks with wall segments are not supported yet",
            "remove the [walls] segments, or make the disks smooth (physics.roughness = -1, no species omega)");
   check_thermostat(top, scene);
+  check_shear(top, scene);
   const StopSpec& st = scene.stop;
   if (st.energy_fraction && !st.time && !st.events && !st.collisions_per_particle && elastic_in_effect(scene))
     top.section("stop").fail("energy_fraction",
