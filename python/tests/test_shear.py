@@ -1,0 +1,56 @@
+"""Lees-Edwards shear in Python: the log says its box is sheared, its crossings of the sliding edges come
+through as `shear` events whose state after holds the new x and vx, and the analyses that do not follow the
+sliding images yet refuse the log with the reason."""
+import numpy as np
+import pytest
+
+import ede
+
+SHEARED = """
+seed = 3
+[box]
+size = [4.0, 4.0]
+boundary = "lees-edwards"
+shear_rate = 1.0
+[physics]
+restitution = 0.9
+[[species]]
+name = "gas"
+count = 100
+radius = 0.05
+[species.velocity]
+kind = "maxwell"
+temperature = 0.5
+[stop]
+time = 4.0
+"""
+
+
+def test_a_sheared_log_names_its_box_and_its_crossings(tmp_path):
+    scene = tmp_path / "shear.toml"
+    scene.write_text(SHEARED)
+    log = tmp_path / "shear.ede"
+    ede.run(scene, log=log, progress=False)
+    lg = ede.open(log)
+    assert lg.info["format_version"] == 3
+    assert lg.info["lees_edwards"] is True
+    assert lg.info["boundary"] == "periodic"
+    counts = lg.count_events()
+    assert counts["shear"] > 10
+    ev = lg.events()
+    kinds = np.array([ede.EVENT_KINDS[k] for k in ev["kind"]])
+    crossings = ev[kinds == "shear"]
+    assert len(crossings) == counts["shear"]
+    first = crossings[0]
+    before = lg.state(event=int(first["index"]))
+    after = lg.state(event=int(first["index"]) + 1)
+    i = int(first["i"])
+    # The image's velocity: vx moves by -+ shear_rate * Ly = 4 (up through the top: minus).
+    assert abs(abs(after.vx[i] - before.vx[i]) - 4.0) < 1e-12
+    assert after.vy[i] == before.vy[i]
+    with pytest.raises(Exception, match="Lees-Edwards"):
+        ede.msd(lg, max_lag=0.5, lag_step=0.1)
+
+
+def test_an_unsheared_log_says_so(gas_log):
+    assert ede.open(gas_log).info["lees_edwards"] is False
