@@ -119,4 +119,20 @@ TEST_CASE("shear log: the transport analyses and the viscosity refuse a sheared 
   const auto eta = shear_viscosity(log, v);
   REQUIRE_FALSE(eta.ok());
   CHECK(eta.error().message.find("Lees-Edwards") != std::string::npos);
+  // The analyses that pair disks by the plain periodic image (analysis/sheared_guard.hpp).
+  auto refused = [](const auto& result) {
+    return !result.ok() && result.error().message.find("Lees-Edwards") != std::string::npos;
+  };
+  PairCorrelationOptions g;
+  g.r_max = 1;
+  FrameTimes frames;
+  frames.frames = 3;
+  CHECK(refused(pair_correlation(log, g, frames)));
+  CHECK(refused(bond_order(log, g, frames)));
+  StructureFactorOptions k;
+  k.k_max = 20;
+  CHECK(refused(structure_factor(log, k, frames)));
+  CHECK(refused(contact_values(log, frames)));
+  CHECK(refused(measure_pressure(log)));
+  CHECK(refused(impact_statistics(log)));
 }

@@ -11,6 +11,7 @@
 
 #include "ede/collision_stats.hpp"
 #include "ede/kinetic_theory.hpp"
+#include "analysis/sheared_guard.hpp"
 
 namespace ede {
 
@@ -57,6 +58,7 @@ std::vector<double> speed_law(const Histogram& h, const Samples& s, double kT) {
 }  // namespace
 
 Result<ImpactStatistics> impact_statistics(const Log& log, const ImpactRequest& request) {
+  if (std::string why = sheared_refusal(log, "impact statistics"); !why.empty()) return Error{why};
   if (request.bins == 0) return Error{log.info().path + ": impact statistics need at least one bin"};
   auto start = state_at_start(log, request.range);
   if (!start) return start.error();

@@ -13,6 +13,7 @@
 #include "ede/number_text.hpp"
 #include "analysis/pressure_pass.hpp"
 #include "replay/log_impl.hpp"
+#include "analysis/sheared_guard.hpp"
 
 namespace ede {
 
@@ -169,6 +170,7 @@ double PressureReport::henderson() const { return henderson_z(packing_fraction) 
 double PressureReport::expected_area() const { return has_walls() ? virial_area : area; }
 
 Result<PressureReport> measure_pressure(const Log& opened, const PressureOptions& o) {
+  if (std::string why = sheared_refusal(opened, "pressure"); !why.empty()) return Error{why};
   const std::shared_ptr<const LogReader> log = reader_of(opened);
   if (log->header().gx != 0 || log->header().gy != 0)
     return Error{log->path() + ": the run is under gravity: its pressure varies with height (hydrostatics), "

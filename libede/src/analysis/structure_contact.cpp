@@ -16,6 +16,7 @@
 #include "ede/kinetic_theory.hpp"
 #include "ede/pressure.hpp"
 #include "ede/structure.hpp"
+#include "analysis/sheared_guard.hpp"
 
 namespace ede {
 
@@ -83,6 +84,7 @@ ContactValue contact_from_pressure(double z, double z_error, double n, double si
 
 Result<ContactValues> contact_values(const Log& log, const FrameTimes& f, double fit_width_in_sigma,
                                      std::size_t bins_in_fit) {
+  if (std::string why = sheared_refusal(log, "g(sigma) three ways"); !why.empty()) return Error{why};
   auto first = log.state_at(f.from.value_or(double(log.info().start_time)));
   if (!first) return first.error();
   const State& s = first.value();

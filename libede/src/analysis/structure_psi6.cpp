@@ -9,6 +9,7 @@
 
 #include "analysis/structure_cells.hpp"
 #include "ede/structure.hpp"
+#include "analysis/sheared_guard.hpp"
 
 namespace ede {
 
@@ -80,6 +81,7 @@ Result<BondOrder> bond_order(const State& s, const PairCorrelationOptions& o) {
 }
 
 Result<BondOrder> bond_order(const Log& log, const PairCorrelationOptions& o, const FrameTimes& f) {
+  if (std::string why = sheared_refusal(log, "bond order"); !why.empty()) return Error{why};
   auto times = frame_times(log, f);
   if (!times) return times.error();
   BondOrder acc;

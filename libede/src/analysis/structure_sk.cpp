@@ -9,6 +9,7 @@
 #include <string>
 
 #include "ede/structure.hpp"
+#include "analysis/sheared_guard.hpp"
 
 namespace ede {
 
@@ -81,6 +82,7 @@ Result<StructureFactor> structure_factor(const State& s, const StructureFactorOp
 }
 
 Result<StructureFactor> structure_factor(const Log& log, const StructureFactorOptions& o, const FrameTimes& f) {
+  if (std::string why = sheared_refusal(log, "S(k)"); !why.empty()) return Error{why};
   auto times = frame_times(log, f);
   if (!times) return times.error();
   StructureFactor acc;
