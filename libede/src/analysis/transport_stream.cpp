@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "analysis/sheared_guard.hpp"
+
 namespace ede::transport {
 
 Result<Window> open_window(const Log& log, const TransportOptions& o, const char* what) {
@@ -12,9 +14,7 @@ Result<Window> open_window(const Log& log, const TransportOptions& o, const char
   if (info.gx != 0 || info.gy != 0)
     return Error{where + "the log has gravity, so velocities are not constant between events; this analysis "
                          "needs a run without gravity"};
-  if (info.lees_edwards)
-    return Error{where + "the log is of a Lees-Edwards (sheared) box, whose crossings of the sliding edges this "
-                         "analysis does not follow yet; it needs a walled or periodic run"};
+  if (std::string why = sheared_refusal(log, what); !why.empty()) return Error{why};
   Window w;
   w.from = o.from.value_or(double(info.start_time));
   w.to = o.to.value_or(double(info.end_time));
