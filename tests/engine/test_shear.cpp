@@ -13,6 +13,7 @@
 #include <cmath>
 #include <vector>
 
+#include "ede/distributions.hpp"
 #include "engine_test_support.hpp"
 
 using namespace ede;
@@ -253,4 +254,33 @@ TEST_CASE("shear: a sheared granular gas settles into the linear velocity profil
   CHECK(mean_loss > 0);
   CHECK(std::abs(balance.mean) < 4 * balance.error);
   CHECK(balance.error < 0.03 * mean_loss);
+}
+
+TEST_CASE("shear: the thermostat draws about the flow at the disk's height, not about rest", "[shear][thermostat]") {
+  // 100 disks in a 20 x 20 box sheared at rate 0.2: the flow spans -2 .. 2 across the box, twice the
+  // thermal speed at kT = 1. Each redraw's velocity less the flow rate (y - 10) at its disk's height must
+  // follow Maxwell-Boltzmann at kT = 1 (KS p > 0.001; the same test on the velocities themselves, which
+  // carry the flow's spread too, gives p < 1e-4), and the x-components less the flow average to 0 (within
+  // 5 standard errors: about 10 000 draws of unit variance).
+  const double l = 20, rate = 0.2, kT = 1;
+  const InitialState s = lattice_gas(10, 0.2, l, 5);
+  EngineOptions o = sheared(rate, 100);
+  o.physics.thermostat = ThermostatSpec{kT, 1.0, {}};
+  o.seed = 17;
+  auto run = run_recorded(s, o);
+  const auto redraws = run.recorder->of_kind(EventKind::Thermostat);
+  REQUIRE(redraws.size() > 9000);
+  std::vector<double> relative, lab;
+  double sum_x = 0;
+  for (const auto& e : redraws) {
+    const double y = e.before_i.y + e.before_i.vy * (e.time - e.before_i.t);
+    const double cx = e.vix - rate * (y - l / 2);
+    relative.push_back(mb_speed_cdf(std::hypot(cx, e.viy), 1, kT));
+    lab.push_back(mb_speed_cdf(std::hypot(e.vix, e.viy), 1, kT));
+    sum_x += cx;
+  }
+  const auto uniform = [](double x) { return x; };
+  CHECK(ks_test(relative, uniform).p_value > 1e-3);
+  CHECK(ks_test(lab, uniform).p_value < 1e-4);
+  CHECK(std::abs(sum_x / double(redraws.size())) < 5 / std::sqrt(double(redraws.size())));
 }

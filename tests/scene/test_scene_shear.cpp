@@ -38,6 +38,11 @@ TEST_CASE("scene shear: a Lees-Edwards box is periodic with its rate, and reache
   CHECK_FALSE(ede::engine_can_run(ede::EngineKind::PeriodicDissipative, o));
   CHECK_FALSE(ede::engine_can_run(ede::EngineKind::Sheared, ede::engine_options_from(plain, 30)));
   CHECK(ede::test::scene_of(scene("boundary = \"lees-edwards\"\nshear_rate = 0.0")).sheared());
+  // A thermostat in a sheared box draws about the flow, in the same engine.
+  const ede::Scene heated =
+      ede::test::scene_of(scene("boundary = \"lees-edwards\"\nshear_rate = 0.25", "[thermostat]\ntemperature = 1.0\nrate = 0.1"));
+  CHECK(heated.thermostatted());
+  CHECK(ede::engine_kind_for(ede::engine_options_from(heated, 30)) == ede::EngineKind::Sheared);
 }
 
 TEST_CASE("scene shear: bad keys and unsupported effects are errors with file, line, key and fix", "[scene][shear]") {
@@ -48,8 +53,6 @@ TEST_CASE("scene shear: bad keys and unsupported effects are errors with file, l
              Contains("only a Lees-Edwards box is sheared"));
   CHECK_THAT(error_of(scene("boundary = \"lees-edward\"\nshear_rate = 0.5")), Contains("lees-edwards"));
   const std::string le = "boundary = \"lees-edwards\"\nshear_rate = 0.5";
-  CHECK_THAT(error_of(scene(le, "[thermostat]\ntemperature = 1.0\nrate = 1.0")),
-             Contains("the Andersen thermostat") && Contains("not supported yet") && Contains("restitution < 1"));
   CHECK_THAT(error_of(scene(le, "[physics]\nroughness = 0.5")), Contains("rough or spinning disks"));
   CHECK_THAT(error_of(scene(le, "[physics]\ngravity = [0.0, -1.0]")), Contains("gravity needs walls"));
   CHECK_THAT(error_of(scene(le, "[[physics.steps]]\nradius = [0.06]\nenergy = [-0.5]")),

@@ -43,8 +43,9 @@ struct PeriodicBoundary {
 };
 // Lees-Edwards: periodic in x; crossing the top or bottom edge is a shear event (room_shear.hpp), and pairs
 // across it meet the sliding image. Sheared engines are Dissipative (a sheared granular gas is the steady
-// state the heating needs; xi = 1 computes exactly what Elastic does), without gravity, segments, rotation,
-// steps or the thermostat (refused by the scene).
+// state the heating needs; xi = 1 computes exactly what Elastic does) and carry the thermostat's clock
+// (Andersen, drawing about the flow: room_thermostat.hpp), without gravity, segments, rotation or steps
+// (refused by the scene).
 struct LeesEdwardsBoundary {
   static constexpr bool kPeriodic = true;
   static constexpr bool kSheared = true;

@@ -118,8 +118,8 @@ Status check_engine_input(const InitialState& init, const EngineOptions& options
       return Error{"the shear rate of a Lees-Edwards box must be finite and >= 0"};
     if (options.boundary != BoundaryKind::Periodic || options.algorithm == Algorithm::AllPairs)
       return Error{"a Lees-Edwards box is periodic and runs with the cell grid (not the all-pairs baseline)"};
-    if (uses_rotation(options) || uses_thermostat(options) || ph.has_steps() || !options.actions.empty())
-      return Error{"a Lees-Edwards box with rough disks, the thermostat, steps or actions is not supported yet"};
+    if (uses_rotation(options) || ph.has_steps() || !options.actions.empty())
+      return Error{"a Lees-Edwards box with rough disks, steps or actions is not supported yet"};
   }
   if ((!init.omega.empty() && init.omega.size() != n) || (!init.inertia.empty() && init.inertia.size() != n))
     return Error{"the initial state's angular velocities or moments of inertia do not match its disk count"};

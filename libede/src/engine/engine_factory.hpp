@@ -14,13 +14,15 @@
 //   WallsGravitySteps    walls     Dissipative  UniformGravity  a stepped potential under gravity
 //   PeriodicThermostat   periodic  Dissipative  NoField         the Andersen thermostat (Andersen), periodic box
 //   WallsThermostat      walls     Dissipative  NoField         the Andersen thermostat (Andersen), walled box
-//   Sheared              lees-edw. Dissipative  NoField         a Lees-Edwards box (sliding images), elastic or not
+//   Sheared              lees-edw. Dissipative  NoField         a Lees-Edwards box (sliding images), elastic or not,
+//                                                               with or without the thermostat (Andersen)
 //
 // The three stepped ones carry the step table and the step room (square wells and shoulders); no other
 // scene's engine has them compiled in. A scene with both steps and a thermostat is refused by the scene
 // loader (no engine combines the two axes).
 // The sheared one has the sliding edges' room and realignment clock (room_shear.hpp); no other scene's
-// engine has them compiled in.
+// engine has them compiled in. It carries the thermostat's clock too (drawing about the flow), never due
+// without a [thermostat]: one comparison per event, where a fifteenth engine would double its build time.
 // Fourteen per scalar type (eight before the stepped potential, the thermostat and Lees-Edwards):
 // make_engine_as<T> below names them all, and engine_float.cpp, engine_double.cpp,
 // engine_long_double.cpp (and engine_float128.cpp where EDE_HAVE_FLOAT128) instantiate it once each, so
@@ -108,7 +110,9 @@ Result<std::unique_ptr<EngineApi<T>>> make_engine_as(EngineKind kind, const Init
           init, o, shape, resume);
       break;
     case EngineKind::Sheared:
-      e = std::make_unique<Engine<T, LeesEdwardsBoundary, Dissipative>>(init, o, shape, resume);
+      e = std::make_unique<
+          Engine<T, LeesEdwardsBoundary, Dissipative, NoField, StableContact, NoSegments, Smooth, HardCore, Andersen>>(
+          init, o, shape, resume);
       break;
     case EngineKind::WallsThermostat:
       e = std::make_unique<

@@ -76,7 +76,8 @@ const char* to_string(EngineKind k) {
 
 EngineKind engine_kind_for(const EngineOptions& o) {
   const bool elastic = o.physics.elastic();
-  // A Lees-Edwards box has one engine; the scene loader refuses what it lacks (thermostat, steps, rotation).
+  // A Lees-Edwards box has one engine, thermostat or not; the scene loader refuses what it lacks (steps,
+  // rotation).
   if (uses_shear(o)) return EngineKind::Sheared;
   // No engine has both a thermostat and steps: the scene loader refuses such a scene.
   if (uses_thermostat(o))
@@ -123,7 +124,7 @@ bool engine_can_run(EngineKind k, const EngineOptions& o) {
     // clock is never due), which is what ede-bench effects compares. Steps are kept out above.
     case EngineKind::PeriodicThermostat: return periodic && !gravity && !segments && !rough;
     case EngineKind::WallsThermostat: return !periodic && !gravity && !segments && !rough;
-    case EngineKind::Sheared: return periodic && !gravity && !segments && !rough && !heat;
+    case EngineKind::Sheared: return periodic && !gravity && !segments && !rough;
   }
   return false;
 }

@@ -59,9 +59,9 @@ struct EffectSet {
                 "stepped potentials run in a dissipative engine without rough disks or segments");
   static_assert(!kThermostat || (kDissipative && !kGravity && !kSegments && !kRough && !kSteps),
                 "the thermostat runs in a dissipative engine without gravity, segments, rotation or steps");
-  static_assert(!kSheared || (kDissipative && !kGravity && !kSegments && !kRough && !kSteps && !kThermostat),
-                "a Lees-Edwards box runs in a dissipative engine without gravity, segments, rotation, steps or "
-                "the thermostat");
+  static_assert(!kSheared || (kDissipative && !kGravity && !kSegments && !kRough && !kSteps && kThermostat),
+                "a Lees-Edwards box runs in a dissipative engine with the thermostat's clock and without gravity, "
+                "segments, rotation or steps");
 };
 
 // When the run stops, and what happens at times other than disk events (stops.hpp).

@@ -26,16 +26,24 @@ struct NoShear {};
 
 template <class T>
 struct ShearClock {
+  T rate = 0;           // the shear rate: the flow's x-velocity grows by rate per unit height
+  T half_height = 0;    // ly / 2, where the flow is at rest
   T slide = 0;          // u: the x-velocity of the image above (the one below moves at -u)
   T cell_width = 1;     // of the grid's columns (lx / nx)
   T period = kNever<T>; // the time in which the images slide half a cell: between two realignments
   T next = kNever<T>;   // the next realignment
 
   void setup(double shear_rate, T lx, T ly, std::int32_t nx) {
+    rate = T(shear_rate);
+    half_height = ly / T(2);
     slide = T(shear_rate) * ly;
     cell_width = lx / T(nx);
     period = slide > 0 ? cell_width / (T(2) * slide) : kNever<T>;
   }
+  // The streaming velocity at height y, rate (y - ly / 2): zero at mid-height, so the flow carries no net
+  // momentum, and the image above (y + ly) moves faster by exactly the slide, as the sliding edge demands.
+  // The thermostat draws about it (room_thermostat.hpp).
+  T flow(T y) const { return rate * (y - half_height); }
   // The image above is shifted by +offset(t) in x, the one below by -offset(t).
   T offset(T t, T lx) const { return ede::fmod(slide * t, lx); }
   // The column of the grid the offset falls in (0 .. nx - 1).

@@ -3,6 +3,11 @@
 // Maxwell-Boltzmann at its group's kT: each component sigma z with sigma = sqrt(kT / m) and z standard
 // normal (Rng::normal_pair_exact: the polar method with the libm-free exact_log). The loop takes these
 // events by time, like actions (engine_core.hpp), never from the queue.
+// In a Lees-Edwards box the draw is about the shear flow at the disk's height (ShearClock::flow): the
+// thermostat holds the temperature of the velocities relative to the flow and leaves the flow itself, the
+// profile-biased thermostat of non-equilibrium simulations (Evans and Morriss, "Statistical Mechanics of
+// Nonequilibrium Liquids", 2008, ch. 6). About rest, it would pull every disk back to zero x-velocity and
+// damp the flow it is meant to hold.
 // Every draw of the m-th event (m = thermostat events before it) comes from its own stream,
 // Rng::for_stream(seed, kThermostatStreams + 2 m), in this order: the group (only with several), the
 // disk, the normal pair, then the exponential that sets the next event's time. The clock is drawn again
@@ -57,6 +62,7 @@ void redraw_velocity(S& s, typename S::Scalar t) {
     const double ke_before = s.disk_energy(i);
     d.vx = T(sigma * z0);
     d.vy = T(sigma * z1);
+    if constexpr (S::Effects::kSheared) d.vx += s.shear.flow(d.y);  // about the shear flow, not about rest
     s.dissipation.ke += s.disk_energy(i) - ke_before;
     ++d.counter;
     d.last_partner = -1;

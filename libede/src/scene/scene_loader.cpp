@@ -750,19 +750,16 @@ void check_thermostat(const Reader& top, const Scene& scene) {
   if (scene.physics.has_steps()) refuse("square wells or shoulders ([[physics.steps]])");
 }
 
-// A Lees-Edwards box runs in one engine (the sheared one: smooth hard disks, restitution and the TC model
-// allowed); what that engine does not have is refused here, each with its reason. Gravity and wall
-// segments are refused for every periodic box already (check_physics, read_walls).
+// A Lees-Edwards box runs in one engine (the sheared one: smooth hard disks; restitution, the TC model and
+// the thermostat, which draws about the flow, allowed); what that engine does not have is refused here,
+// each with its reason. Gravity and wall segments are refused for every periodic box already
+// (check_physics, read_walls).
 void check_shear(const Reader& top, const Scene& scene) {
   if (!scene.sheared()) return;
   const Reader box = top.section("box");
   const auto refuse = [&](std::string_view what, std::string_view fix) {
     box.fail("boundary", "a Lees-Edwards box with " + std::string(what) + " is not supported yet", fix);
   };
-  if (scene.thermostatted())
-    refuse("the Andersen thermostat",
-           "remove [thermostat] (an Andersen thermostat about zero velocity would damp the shear flow itself); "
-           "absorb the viscous heating with physics.restitution < 1 instead");
   if (scene.rotates()) refuse("rough or spinning disks", "make the disks smooth (physics.roughness = -1, no species omega)");
   if (scene.physics.has_steps()) refuse("square wells or shoulders", "remove [[physics.steps]]");
   if (!scene.actions.empty())
