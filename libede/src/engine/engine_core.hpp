@@ -191,8 +191,10 @@ class Engine final : public EngineApi<T> {
         reverse_velocities(s, t_action);
         ++done;
         if (const RunStatus st = check_stops(s); st != RunStatus::Running) return finish(st);
-      } else if (Fx::kThermostat && t_heat != kNever<T> && t_heat <= t_sample && t_heat <= t_limit) {
-        // At equal times disk events and actions go first, as the order of the kinds says.
+      } else if (Fx::kThermostat && t_heat != kNever<T> && t_heat <= t_sample && t_heat <= t_limit &&
+                 (!Fx::kSheared || t_heat <= t_align)) {
+        // At equal times disk events and actions go first, as the order of the kinds says; a realignment
+        // due before the redraw goes first (it would otherwise be taken later, at a time in the past).
         redraw_velocity(s, t_heat);
         ++done;
         if (const RunStatus st = check_stops(s); st != RunStatus::Running) return finish(st);
