@@ -15,9 +15,9 @@
 // give the bulk viscosity), gravity, rough disks (their antisymmetric stress couples to spin), inelastic
 // collisions and the Andersen thermostat (no equilibrium dynamics: a thermostat's redraws destroy momentum
 // and the stress correlations with it), and a time reversal inside the window.
-// Made to be reused for a sheared (Lees-Edwards) box: the kinetic part is taken relative to a streaming
-// velocity and the separation through one image-aware function (analysis/stress_walk.cpp), the two places
-// a sliding boundary changes.
+// A sheared (Lees-Edwards) box changes two places of the stress integral (analysis/stress_walk.cpp): the
+// kinetic part is taken relative to the shear flow, and a pair across the sliding edge is separated
+// through the sliding image; its viscosity is the mean stress over the rate (sheared_viscosity, below).
 // Rejected: the Helfand moment sum_i m x_i v_iy from unwrapped positions (in a periodic box it jumps when a
 // disk crosses an edge: Viscardy and Gaspard, PRE 68, 041204 (2003)); sampling the stress on a grid (the
 // collisional part is a sum of impulses, not a function of the state).
@@ -35,14 +35,18 @@
 namespace ede {
 
 // The integral of V P_ab over the bins [from + k w, from + (k + 1) w), k = 0 .. bins - 1 (V = Lx Ly).
+// In a Lees-Edwards log the kinetic part is taken relative to the shear flow (u_x = shear_rate y) and a
+// pair across the sliding edge is separated through the sliding image.
 struct StressIntegral {
   double from = 0, bin_width = 0, area = 0;
+  double shear_rate = 0;  // the log's (0: not sheared)
   std::size_t disks = 0;
   std::vector<double> xx, yy, xy, yx;  // per bin: kinetic integral plus the bin's impulse terms
+  std::vector<double> kinetic;         // per bin: the kinetic integral's trace, integral of sum m c^2 dt
   // The same over the whole grid, split into the kinetic integral and the impulse sum, in long double.
   long double kinetic_xx = 0, kinetic_yy = 0, kinetic_xy = 0;
   long double impulse_xx = 0, impulse_yy = 0, impulse_xy = 0, impulse_yx = 0;
-  std::uint64_t pair_events = 0, step_events = 0;
+  std::uint64_t pair_events = 0, step_events = 0, thermostat_events = 0;
   std::size_t bins() const { return xy.size(); }
 };
 // Fails for the logs this analysis refuses (above), naming the log and why.
@@ -78,5 +82,57 @@ struct ShearViscosity {
   std::string enskog_note;
 };
 Result<ShearViscosity> shear_viscosity(const Log& log, const ViscosityOptions& o);
+
+// Shear viscosity from a sheared run (a Lees-Edwards log, in its steady state): eta = -<P_xy> / gamma,
+// the mean shear stress over the window from the same exact stress integral (kinetic part relative to the
+// flow u_x = gamma y, impulses through the sliding image). The steady state needs the viscous heating
+// removed: by the thermostat about the flow, or by inelastic collisions (then it is a granular gas's
+// viscosity, not comparable with Enskog's). The rate dependence (shear thinning) is taken out by
+// zero_shear_viscosity over runs at several rates. Errors: contiguous blocks of the window (each much
+// longer than the stress's correlation time, a few collision times), standard error of their means.
+// Refused: logs that are not sheared (use shear_viscosity), without a scene (the rate is unknown), with
+// rough disks or steps (which a Lees-Edwards box does not run).
+struct ShearedOptions {
+  std::optional<double> from, to;  // the window; default: the whole log (skip the start-up with `from`)
+  std::size_t blocks = 10;         // >= 2
+};
+struct ShearedViscosity {
+  double shear_rate = 0;
+  double from = 0, to = 0, area = 0;
+  std::size_t disks = 0, blocks = 0;
+  std::uint64_t pair_events = 0, thermostat_events = 0;
+  // Per block: mid-time, P_xy (symmetrised), kT relative to the flow, and eta = -P_xy / gamma.
+  std::vector<double> block_time, block_shear_stress, block_kT, block_viscosity;
+  double shear_stress = 0, shear_stress_error = 0;            // <P_xy> (< 0 under shear)
+  double kinetic_shear_stress = 0, collisional_shear_stress = 0;  // its two parts over the window
+  double normal_stress_difference = 0, normal_stress_difference_error = 0;  // <P_xx - P_yy>
+  double pressure = 0;                                         // (P_xx + P_yy) / 2
+  double kT = 0, kT_error = 0;  // sum m c^2 / (2 (N - 1)), time average (c relative to the flow and the mean)
+  double viscosity = 0, viscosity_error = 0;  // -<P_xy> / gamma
+  // Reduced by the disks' diameter sigma, mass m and the window's kT (equal disks only; else NaN):
+  // gamma* = gamma sigma sqrt(m / kT), eta* = eta sigma / sqrt(m kT). Hard disks have no energy scale but
+  // kT, so eta* depends on phi and gamma* alone: runs at different rates and temperatures compare in them.
+  double sigma = 0, reduced_rate = 0, reduced_viscosity = 0, reduced_viscosity_error = 0;
+  // Enskog's 2D viscosity at the window's kT, and reduced (NaN, and why in enskog_note, where it does not
+  // apply).
+  double packing_fraction = 0, g_contact = 0, enskog = 0, dilute = 0, enskog_reduced = 0;
+  std::string enskog_note;
+};
+Result<ShearedViscosity> sheared_viscosity(const Log& log, const ShearedOptions& o = {});
+
+// The zero-shear viscosity: a weighted least-squares fit eta* = eta0* + b gamma*^2 over runs at several
+// rates (each point weighted by 1 / its error squared). The viscosity is even in gamma (reversing the
+// shear is a reflection), so its expansion starts at gamma^2; in 2D the long-time tail adds a term in
+// ln gamma, small at low and moderate density and not fitted (chi2 says when the form fails).
+// Needs at least two runs of equal disks at one packing fraction (within 1e-9).
+struct ZeroShearFit {
+  std::size_t points = 0;
+  double reduced_viscosity = 0, reduced_viscosity_error = 0;  // eta0* and its standard error
+  double slope = 0, slope_error = 0;                           // b
+  double chi2 = 0;                                             // of the fit, points - 2 degrees of freedom
+  double packing_fraction = 0;
+  double enskog_reduced = 0;  // Enskog's eta sigma / sqrt(m kT) at that phi (NaN where it does not apply)
+};
+Result<ZeroShearFit> zero_shear_viscosity(const std::vector<ShearedViscosity>& runs);
 
 }  // namespace ede

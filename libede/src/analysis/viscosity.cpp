@@ -18,12 +18,10 @@
 // S L stays below a few 10^8 for the grids the tool allows, and the sums need no library).
 #include <algorithm>
 #include <cmath>
-#include <limits>
-#include <numbers>
 
+#include "analysis/enskog_reference.hpp"
 #include "analysis/stress_walk.hpp"
 #include "analysis/transport_stream.hpp"
-#include "ede/kinetic_theory.hpp"
 #include "ede/viscosity.hpp"
 
 namespace ede {
@@ -84,32 +82,14 @@ double slope(const std::vector<double>& x, const std::vector<double>& y, std::si
   return sxy / sxx;
 }
 
-// Enskog's viscosity for a log of equal hard disks at the window's kT; NaN and why not otherwise.
-void enskog_of(const Log& log, const State& s, ShearViscosity& out) {
-  out.enskog = out.dilute = std::numeric_limits<double>::quiet_NaN();
-  if (auto scene = log.scene(); scene && scene.value().physics.has_steps()) {
-    out.enskog_note = "not applicable: square wells or shoulders (Enskog's formula is for hard disks)";
-    return;
-  }
-  for (std::size_t i = 1; i < s.size(); ++i)
-    if (s.radius[i] != s.radius[0] || s.mass[i] != s.mass[0]) {
-      out.enskog_note = "not applicable: the disks differ in radius or mass (a mixture needs g_ij per pair of species)";
-      return;
-    }
-  const double r = s.radius[0], m = s.mass[0];
-  out.packing_fraction = double(s.size()) * std::numbers::pi * r * r / out.area;
-  out.g_contact = henderson_contact_value(out.packing_fraction);
-  out.enskog = enskog_viscosity(out.packing_fraction, 2 * r, out.g_contact, out.kT, m);
-  out.dilute = dilute_viscosity(2 * r, out.kT, m);
-  out.enskog_note = "Enskog (Gass 1971) with Henderson's g(sigma) and the Sonine factor " +
-                    std::to_string(kViscositySonineFactor).substr(0, 6) + " on the kinetic part";
-}
-
 }  // namespace
 
 Result<StressIntegral> stress_integral(const Log& log, double from, double bin_width, std::size_t bins) {
   const std::string where = log.info().path + ": stress integral: ";
-  if (const std::string why = stress::refusal(log); !why.empty()) return Error{where + why};
+  // A sheared log's integral is taken relative to the flow (its thermostat, if any, drawing about it); any
+  // other log must be one the equilibrium analysis takes.
+  const std::string why = log.info().lees_edwards ? stress::sheared_refusal(log) : stress::refusal(log);
+  if (!why.empty()) return Error{where + why};
   const double end = double(log.info().end_time);
   // The last edge may pass the log's end by the rounding of bins * bin_width; the walk stops at the end.
   if (!(bin_width > 0) || bins == 0 || !(from >= log.info().start_time) ||
@@ -226,7 +206,9 @@ Result<ShearViscosity> shear_viscosity(const Log& log, const ViscosityOptions& o
   out.viscosity_error = transport::standard_error(slopes);
   auto start = log.state_at(from);
   if (!start) return start.error();
-  enskog_of(log, start.value(), out);
+  const stress::EnskogReference e = stress::enskog_reference(log, start.value(), out.area, out.kT);
+  out.packing_fraction = e.packing_fraction, out.g_contact = e.g_contact;
+  out.enskog = e.enskog, out.dilute = e.dilute, out.enskog_note = e.note;
   return out;
 }
 
