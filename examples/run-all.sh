@@ -107,4 +107,9 @@ for run in square-well square-well-hot; do
 done
 "$tools/ede-stats" gr "$logs/square-well.ede" --from 10 --plot "$out/square-well-gr.png" | grep -E '^(g\(r\)|peak|contact)' || true
 
+section "shear viscosity from sheared runs at three rates, and its zero-shear limit (examples/shear/viscosity.sweep.toml)"
+"$tools/ede-sweep" "$root/examples/shear/viscosity.sweep.toml" --out-dir "$logs/viscosity-sweep" -q
+"$tools/ede-stats" viscosity "$logs"/viscosity-sweep/runs/*.ede --from 2000 --plot "$out/viscosity-sheared.png" |
+  grep -E '^(zero shear|Enskog)' || true
+
 printf '\nall figures in %s (%s s)\n' "$out" "$(( $(date +%s) - start ))"

@@ -28,7 +28,8 @@ from .state import State
 from .sweeps import sweep, sweep_program, sweep_tables
 from .structure import (bond_order, contact_values, enskog_diffusion, henderson_contact, kolafa_rottner_contact,
                         kolafa_rottner_z, msd, pair_correlation,
-                        structure_factor, vacf, viscosity, enskog_viscosity)
+                        structure_factor, vacf, viscosity, sheared_viscosity, zero_shear_viscosity,
+                        enskog_viscosity)
 
 __version__ = _ede.__version__
 
@@ -37,4 +38,5 @@ __all__ = ["CorruptLogError", "Error", "InvalidError", "IoError", "UnsupportedEr
            "export_gsd", "export_xyz", "frame_times", "EVENT_KINDS", "Log", "open", "Simulation",
            "load_scene", "resume", "run", "State", "sweep", "sweep_program", "sweep_tables", "bond_order",
            "contact_values", "enskog_diffusion", "henderson_contact", "kolafa_rottner_contact", "kolafa_rottner_z",
-           "msd", "pair_correlation", "structure_factor", "vacf", "viscosity", "enskog_viscosity"]
+           "msd", "pair_correlation", "structure_factor", "vacf", "viscosity", "sheared_viscosity",
+           "zero_shear_viscosity", "enskog_viscosity"]

@@ -6,7 +6,7 @@ from . import _ede
 from .analysis import _log, _report
 
 __all__ = ["pair_correlation", "contact_values", "structure_factor", "bond_order", "msd", "vacf",
-           "viscosity", "enskog_viscosity", "enskog_diffusion", "henderson_contact", "kolafa_rottner_z", "kolafa_rottner_contact"]
+           "viscosity", "sheared_viscosity", "zero_shear_viscosity", "enskog_viscosity", "enskog_diffusion", "henderson_contact", "kolafa_rottner_z", "kolafa_rottner_contact"]
 
 
 def _species(log, name):
@@ -59,6 +59,21 @@ def viscosity(log, max_lag, *, lag_step=None, t0=None, t1=None, blocks=10):
     slope over the last half of the lags), the Green-Kubo running integral, and Enskog's eta_E."""
     step = float(lag_step) if lag_step is not None else float(max_lag) / 100
     return _report(_ede.viscosity(_log(log), t0, t1, step, float(max_lag), int(blocks)))
+
+
+def sheared_viscosity(log, *, t0=None, t1=None, blocks=10):
+    """Shear viscosity of a sheared run (Lees-Edwards, in its steady state: start the window after the
+    start-up with t0): eta = -<P_xy> / rate from the exact stress integral relative to the flow, with the
+    standard error over `blocks` blocks; kT relative to the flow; eta* = eta sigma / sqrt(m kT) at
+    rate* = rate sigma sqrt(m / kT) (equal disks); Enskog's eta_E at the run's kT. Per-block values in
+    block_time, block_shear_stress, block_kT, block_viscosity (to see the steady state)."""
+    return _report(_ede.sheared_viscosity(_log(log), t0, t1, int(blocks)))
+
+
+def zero_shear_viscosity(runs):
+    """The zero-shear limit over sheared runs at several rates (the dicts sheared_viscosity returns): a
+    weighted fit eta* = eta0* + b rate*^2, with eta0*'s error, b, chi2 and Enskog's eta_E* at the density."""
+    return _report(_ede.zero_shear_viscosity(list(runs)))
 
 
 def enskog_viscosity(phi, sigma, g_contact, kT, mass):

@@ -1,5 +1,5 @@
 // Structure and transport of a Log (ede/structure.hpp, ede/transport.hpp, ede/viscosity.hpp) for Python:
-// the library functions ede-stats gr, sk, psi6, msd, vacf and viscosity call, each report converted field
+// the library functions ede-stats gr, sk, psi6, msd, vacf and viscosity (both routes) call, each report converted field
 // by field into a dict of numpy arrays; nothing is computed here. Rejected: adding them to
 // bind_analysis.cpp, which another part of the module grows too (one file per part of the API).
 #include <complex>
@@ -29,6 +29,24 @@ py::dict gr_dict(const PairCorrelation& p) {
   d["r_lo"] = vec(p.r_lo), d["r_hi"] = vec(p.r_hi), d["g"] = vec(p.g), d["count"] = vec(p.count);
   d["ideal"] = vec(p.ideal), d["frames"] = p.frames, d["n_a"] = p.n_a, d["n_b"] = p.n_b, d["area"] = p.area;
   if (!p.g6.empty()) d["g6"] = vec(p.g6);
+  return d;
+}
+
+py::dict sheared_dict(const ShearedViscosity& r) {
+  py::dict d;
+  d["shear_rate"] = r.shear_rate, d["from"] = r.from, d["to"] = r.to, d["area"] = r.area, d["disks"] = r.disks;
+  d["blocks"] = r.blocks, d["pair_events"] = r.pair_events, d["thermostat_events"] = r.thermostat_events;
+  d["block_time"] = vec(r.block_time), d["block_shear_stress"] = vec(r.block_shear_stress);
+  d["block_kT"] = vec(r.block_kT), d["block_viscosity"] = vec(r.block_viscosity);
+  d["shear_stress"] = r.shear_stress, d["shear_stress_error"] = r.shear_stress_error;
+  d["kinetic_shear_stress"] = r.kinetic_shear_stress, d["collisional_shear_stress"] = r.collisional_shear_stress;
+  d["normal_stress_difference"] = r.normal_stress_difference;
+  d["normal_stress_difference_error"] = r.normal_stress_difference_error, d["pressure"] = r.pressure;
+  d["kT"] = r.kT, d["kT_error"] = r.kT_error, d["viscosity"] = r.viscosity, d["viscosity_error"] = r.viscosity_error;
+  d["sigma"] = r.sigma, d["reduced_rate"] = r.reduced_rate, d["reduced_viscosity"] = r.reduced_viscosity;
+  d["reduced_viscosity_error"] = r.reduced_viscosity_error, d["packing_fraction"] = r.packing_fraction;
+  d["g_contact"] = r.g_contact, d["enskog"] = r.enskog, d["dilute"] = r.dilute, d["enskog_reduced"] = r.enskog_reduced;
+  d["enskog_note"] = r.enskog_note;
   return d;
 }
 
@@ -122,6 +140,34 @@ void bind_structure(py::module_& m) {
     d["mean_shear_stress_error"] = r.mean_shear_stress_error, d["mean_normal_stress"] = r.mean_normal_stress;
     d["mean_normal_stress_error"] = r.mean_normal_stress_error, d["packing_fraction"] = r.packing_fraction;
     d["g_contact"] = r.g_contact, d["enskog"] = r.enskog, d["dilute"] = r.dilute, d["enskog_note"] = r.enskog_note;
+    return d;
+  });
+  m.def("sheared_viscosity", [](SharedLog& log, py::object from, py::object to, std::size_t blocks) {
+    ShearedOptions o;
+    if (!from.is_none()) o.from = from.cast<double>();
+    if (!to.is_none()) o.to = to.cast<double>();
+    o.blocks = blocks;
+    const ShearedViscosity r = log.read("sheared_viscosity()", [&](const Log& l) { return sheared_viscosity(l, o); });
+    return sheared_dict(r);
+  });
+  m.def("zero_shear_viscosity", [](const py::list& runs) {
+    std::vector<ShearedViscosity> in;
+    for (const py::handle& h : runs) {
+      const py::dict d = h.cast<py::dict>();
+      ShearedViscosity r;
+      r.shear_rate = d["shear_rate"].cast<double>(), r.reduced_rate = d["reduced_rate"].cast<double>();
+      r.reduced_viscosity = d["reduced_viscosity"].cast<double>();
+      r.reduced_viscosity_error = d["reduced_viscosity_error"].cast<double>();
+      r.packing_fraction = d["packing_fraction"].cast<double>(), r.enskog_reduced = d["enskog_reduced"].cast<double>();
+      in.push_back(r);
+    }
+    auto fit = zero_shear_viscosity(in);
+    if (!fit) throw std::runtime_error(fit.error().message);
+    const ZeroShearFit& f = fit.value();
+    py::dict d;
+    d["points"] = f.points, d["reduced_viscosity"] = f.reduced_viscosity;
+    d["reduced_viscosity_error"] = f.reduced_viscosity_error, d["slope"] = f.slope, d["slope_error"] = f.slope_error;
+    d["chi2"] = f.chi2, d["packing_fraction"] = f.packing_fraction, d["enskog_reduced"] = f.enskog_reduced;
     return d;
   });
   m.def("enskog_viscosity", [](double phi, double sigma, double g, double kT, double mass) {

@@ -54,3 +54,47 @@ def test_a_sheared_log_names_its_box_and_its_crossings(tmp_path):
 
 def test_an_unsheared_log_says_so(gas_log):
     assert ede.open(gas_log).info["lees_edwards"] is False
+
+
+THERMOSTATTED = """
+seed = 4
+[box]
+size = [20.0, 20.0]
+boundary = "lees-edwards"
+shear_rate = RATE
+[thermostat]
+temperature = 1.0
+rate = 0.05
+[[species]]
+name = "gas"
+count = 100
+radius = 0.5
+[species.velocity]
+kind = "maxwell"
+temperature = 1.0
+[stop]
+time = 600.0
+"""
+
+
+def test_the_viscosity_of_sheared_runs_and_its_zero_shear_limit(tmp_path, gas_log):
+    runs = []
+    for rate in (0.05, 0.1):
+        scene = tmp_path / ("s%g.toml" % rate)
+        scene.write_text(THERMOSTATTED.replace("RATE", repr(rate)))
+        log = tmp_path / ("s%g.ede" % rate)
+        ede.run(scene, log=log, progress=False)
+        v = ede.sheared_viscosity(ede.open(log), t0=100.0, blocks=5)
+        assert v["shear_rate"] == rate
+        assert v["shear_stress"] < 0
+        assert v["viscosity"] == pytest.approx(-v["shear_stress"] / rate, rel=1e-12)
+        assert v["reduced_rate"] == pytest.approx(rate / np.sqrt(v["kT"]), rel=1e-12)  # sigma = m = 1
+        assert len(v["block_kT"]) == 5 and v["thermostat_events"] > 1000
+        assert np.isfinite(v["enskog"]) and 0.5 < v["viscosity"] / v["enskog"] < 1.5
+        runs.append(v)
+    fit = ede.zero_shear_viscosity(runs)
+    assert fit["points"] == 2
+    assert fit["packing_fraction"] == pytest.approx(100 * np.pi * 0.25 / 400, rel=1e-12)
+    assert fit["reduced_viscosity_error"] > 0
+    with pytest.raises(Exception, match="not sheared"):
+        ede.sheared_viscosity(ede.open(gas_log))

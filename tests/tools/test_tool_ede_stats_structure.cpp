@@ -1,6 +1,7 @@
 // ede-stats gr, sk, psi6, msd and vacf as a user runs them: the summary, the CSV header and rows, --json
 // (parsed by nlohmann-json), a figure, and clear errors. One short periodic log (examples/scenes/periodic.toml,
 // 1000 disks, t = 3) per process.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -78,4 +79,33 @@ TEST_CASE("ede-stats gr, msd: clear errors for a missing log, r_max past half th
   CHECK(lag.err.find("max lag < window length") != std::string::npos);
   const ToolRun both = stats("psi6 " + periodic_log() + " --at 1 --frames 3", "both");
   CHECK(both.status == 2);
+}
+
+TEST_CASE("ede-stats viscosity on sheared logs: each run's eta, the zero-shear fit, its CSV and figure",
+          "[tool][ede-stats][shear]") {
+  // examples/shear/viscosity-gas.toml, shortened to 600 time units, at two rates.
+  const std::string scene = source_path("examples/shear/viscosity-gas.toml");
+  const std::string a = sim_log(scene, " --set stop.time=600", scratch("nemd-a.ede"), "structure-sim-nemd-a");
+  const std::string b = sim_log(scene, " --set stop.time=600 --set box.shear_rate=0.02", scratch("nemd-b.ede"),
+                                "structure-sim-nemd-b");
+  const std::string csv = scratch("nemd.csv");
+  const ToolRun r = stats("viscosity " + a + " " + b + " --from 200 --blocks 5 -o " + csv + " --plot " +
+                              scratch("nemd.png"), "nemd");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK_THAT(r.out, Catch::Matchers::Contains("shear rate 0.04") && Catch::Matchers::Contains("shear rate 0.02") &&
+                        Catch::Matchers::Contains("zero shear") && Catch::Matchers::Contains("eta0* / eta_E* ="));
+  const std::string text = read_file(csv);
+  CHECK(text.rfind("shear_rate,reduced_rate,reduced_rate_squared,eta,eta_error,reduced_eta,", 0) == 0);
+  CHECK(std::count(text.begin(), text.end(), '\n') == 3);  // header and one row per run
+  CHECK(read_file(scratch("nemd.png")).size() > 1000);
+  const ToolRun j = stats("viscosity " + a + " --from 200 --blocks 5 --json", "nemd-json");
+  REQUIRE(j.status == 0);
+  const auto doc = nlohmann::json::parse(j.out);
+  CHECK(doc["viscosity"].get<double>() > 0);
+  CHECK(doc["columns"]["eta"].size() == 1);
+  // An equilibrium log after a sheared one: the route follows the first, and refuses the second.
+  const ToolRun mixed = stats("viscosity " + a + " " + periodic_log(), "nemd-mixed");
+  CHECK(mixed.status != 0);
+  CHECK_THAT(mixed.err, Catch::Matchers::Contains("not sheared"));
 }

@@ -4,6 +4,7 @@
 // the zero-shear limit fitted in gamma*^2. The route follows the first log (sheared or not).
 // Thin: shear_viscosity, sheared_viscosity and zero_shear_viscosity (ede/viscosity.hpp) do everything;
 // this parses, prints and writes the table.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -64,6 +65,10 @@ int run_sheared(const ViscosityCli& c) {
                              " in the last: not a steady state yet (start the window later with --from)");
     runs.push_back(r);
   }
+  // One row per run, in order of the reduced rate (the figure's x).
+  std::stable_sort(runs.begin(), runs.end(), [](const ShearedViscosity& a, const ShearedViscosity& b) {
+    return a.reduced_rate < b.reduced_rate;
+  });
   Table t;
   const auto column = [&](double ShearedViscosity::*field) {
     std::vector<double> v;
@@ -82,11 +87,16 @@ int run_sheared(const ViscosityCli& c) {
   t.add("shear_stress_error", column(&ShearedViscosity::shear_stress_error));
   t.add("enskog", column(&ShearedViscosity::enskog));
   double reduced_enskog = std::numeric_limits<double>::quiet_NaN();
+  std::string dashed;
   if (runs.size() >= 2) {
     auto fit = zero_shear_viscosity(runs);
     if (!fit) return fail(fit.error().message);
     const ZeroShearFit& f = fit.value();
     reduced_enskog = f.enskog_reduced;
+    std::vector<double> line;
+    for (const double x : rate2) line.push_back(f.reduced_viscosity + f.slope * x);
+    t.add("zero_shear_fit", line);
+    dashed = "zero_shear_fit";
     s.add("zero shear", "eta0* " + plus_minus(f.reduced_viscosity, f.reduced_viscosity_error) + " (fit eta* = eta0* + b rate*^2 over " +
                             std::to_string(f.points) + " runs; b " + plus_minus(f.slope, f.slope_error) + ", chi2 " +
                             brief(f.chi2, 3) + " on " + std::to_string(f.points - 2) + " degrees of freedom)");
@@ -105,11 +115,11 @@ int run_sheared(const ViscosityCli& c) {
     reduced_enskog = r.enskog_reduced;
   }
   t.add("enskog_reduced", std::vector<double>(runs.size(), reduced_enskog));
+  if (reduced_enskog == reduced_enskog) dashed += dashed.empty() ? "enskog_reduced" : ",enskog_reduced";
   return finish_table("viscosity", c.out, s, t,
                       {.x = "reduced_rate_squared", .ys = "reduced_eta", .error = "reduced_eta_error",
-                       .dashed = reduced_enskog == reduced_enskog ? "enskog_reduced" : "",
-                       .title = "shear viscosity of sheared runs, -P_xy / rate, reduced",
-                       .xlabel = "(rate sigma sqrt(m / kT))^2", .ylabel = "eta sigma / sqrt(m kT)", .scale = "linear"});
+                       .dashed = dashed, .title = "shear viscosity of sheared runs, -P_xy / rate, reduced",
+                       .xlabel = "(rate sigma sqrt(m / kT))^2", .ylabel = "eta sigma / sqrt(m kT)", .scale = "points"});
 }
 
 int run_viscosity(const ViscosityCli& c) {

@@ -2,8 +2,9 @@
 
 Usage: plot_table.py TABLE.csv OUT.png|svg X YS ERROR DASHED TITLE XLABEL YLABEL SCALE
 YS and DASHED are comma-separated column names (DASHED: reference curves, drawn dashed); ERROR is a column
-of standard errors for the first y ("" for none); SCALE is linear, or loglog (|y| on logarithmic axes,
-points with y <= 0 drawn hollow: the sign of a long-time tail matters).
+of standard errors for the first y ("" for none); SCALE is linear, loglog (|y| on logarithmic axes,
+points with y <= 0 drawn hollow: the sign of a long-time tail matters), or points (linear axes, markers
+with error bars: one point per run, as ede-stats viscosity on sheared runs writes).
 """
 import csv
 import sys
@@ -31,16 +32,22 @@ def main(path, out, x, ys, error, dashed, title, xlabel, ylabel, scale):
             if neg:
                 ax.plot([p[0] for p in neg], [p[1] for p in neg], "o", ms=3, mfc="none", color=colour,
                         label=f"-{name} (negative)")
+        elif scale == "points":
+            errors = col[error] if k == 0 and error and error in col else None
+            ax.errorbar(xs, y, yerr=errors, fmt="o", ms=4, capsize=3, color=colour, label=name)
         else:
             ax.plot(xs, y, color=colour, label=name)
             if k == 0 and error and error in col:
                 lo = [a - b for a, b in zip(y, col[error])]
                 hi = [a + b for a, b in zip(y, col[error])]
                 ax.fill_between(xs, lo, hi, color=colour, alpha=0.25, linewidth=0)
-    for name in [n for n in dashed.split(",") if n]:
+    for j, name in enumerate([n for n in dashed.split(",") if n]):
         y = col[name]
         pts = [(a, b) for a, b in zip(xs, y) if b == b and (scale != "loglog" or (a > 0 and b > 0))]
-        ax.plot([p[0] for p in pts], [p[1] for p in pts], label=name, **style.THEORY)
+        theory = dict(style.THEORY)
+        if j > 0:  # a second reference curve in another colour, so the two can be told apart
+            theory["color"] = style.COLOURS[(j + 1) % len(style.COLOURS)]
+        ax.plot([p[0] for p in pts], [p[1] for p in pts], label=name, **theory)
     if scale == "loglog":
         ax.set_xscale("log")
         ax.set_yscale("log")

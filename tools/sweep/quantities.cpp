@@ -1,6 +1,6 @@
 // Quantities per run (see quantities.hpp): one parse of each name into (family, field, time), then one
 // library call per family that needs the log (log_series, measure_crater, measure_pressure), each made
-// at most once per time.
+// at most once per time (sheared_viscosity once per window start).
 #include "quantities.hpp"
 
 #include <algorithm>
@@ -21,6 +21,9 @@ const std::vector<std::string> kSummary = {"events",      "pair_collisions", "wa
 const std::vector<std::string> kPressure = {"z_virial", "z_wall",          "z_henderson", "z_kolafa_rottner",
                                             "virial",   "wall",            "kT",          "packing_fraction"};
 const std::vector<std::string> kStructure = {"psi6"};
+// sheared_viscosity's numbers (a Lees-Edwards run); @T starts the window at T (default: the log's start).
+const std::vector<std::string> kViscosity = {"eta", "eta_reduced", "rate_reduced", "kT", "shear_stress",
+                                             "enskog", "enskog_reduced", "packing_fraction"};
 
 struct Name {
   std::string family;  // summary, energy, collisions, crater, pressure
@@ -54,14 +57,16 @@ Result<Name> parse(const std::string& text) {
                   ((n.family == "energy" || n.family == "collisions") && n.field.empty() && n.time) ||
                   (n.family == "crater" && known(crater_metric_names(), n.field)) ||
                   (n.family == "pressure" && known(kPressure, base) && !n.time) ||
-                  (n.family == "structure" && known(kStructure, n.field));
+                  (n.family == "structure" && known(kStructure, n.field)) ||
+                  (n.family == "viscosity" && known(kViscosity, base));
   if (ok) return n;
   std::string names;
   for (const auto& s : kSummary) names += s + ", ";
   names += "energy@T, collisions@T, crater.M[@T] (M: ";
   for (const auto& s : crater_metric_names()) names += s + " ";
   names += "), pressure.P[_error] (P: z_virial z_wall z_henderson z_kolafa_rottner virial wall kT packing_fraction)";
-  names += ", structure.psi6[@T]";
+  names += ", structure.psi6[@T], viscosity.V[_error][@T0] (sheared runs; V: eta eta_reduced rate_reduced kT "
+           "shear_stress enskog enskog_reduced packing_fraction; T0: the window's start)";
   return Error{"collect: '" + text + "' is not a quantity. Known: " + names};
 }
 
@@ -88,6 +93,20 @@ double pressure_field(const PressureReport& r, const std::string& field) {
                                              : &r.wall_mean;
   if ((f == "z_wall" || f == "wall") && !r.has_walls()) return kNaN;
   return error ? s->stats.error : s->stats.mean;
+}
+
+double viscosity_field(const ShearedViscosity& v, const std::string& field) {
+  const bool error = field.size() > 6 && field.compare(field.size() - 6, 6, "_error") == 0;
+  const std::string f = error ? field.substr(0, field.size() - 6) : field;
+  if (f == "eta") return error ? v.viscosity_error : v.viscosity;
+  if (f == "eta_reduced") return error ? v.reduced_viscosity_error : v.reduced_viscosity;
+  if (f == "kT") return error ? v.kT_error : v.kT;
+  if (f == "shear_stress") return error ? v.shear_stress_error : v.shear_stress;
+  if (error) return 0.0;  // the rest are not measured with an error
+  if (f == "rate_reduced") return v.reduced_rate;
+  if (f == "enskog") return v.enskog;
+  if (f == "enskog_reduced") return v.enskog_reduced;
+  return v.packing_fraction;
 }
 
 }  // namespace
@@ -118,6 +137,7 @@ Result<std::vector<double>> collect_quantities(const std::vector<std::string>& n
   }
   std::map<std::optional<double>, CraterMeasurement> craters;
   std::optional<PressureReport> pressure;
+  std::map<std::optional<double>, ShearedViscosity> viscosities;
   std::vector<double> out;
   for (const Name& n : parsed) {
     if (n.family == "summary") {
@@ -143,6 +163,15 @@ Result<std::vector<double>> collect_quantities(const std::vector<std::string>& n
       std::complex<double> sum = 0;
       for (const auto& v : p) sum += v;
       out.push_back(p.empty() ? kNaN : std::abs(sum) / double(p.size()));
+    } else if (n.family == "viscosity") {
+      if (!viscosities.count(n.time)) {
+        ShearedOptions o;
+        o.from = n.time;
+        auto v = sheared_viscosity(log, o);
+        if (!v) return v.error();
+        viscosities.emplace(n.time, std::move(v).value());
+      }
+      out.push_back(viscosity_field(viscosities.at(n.time), n.field));
     } else {
       if (!pressure) {
         auto r = measure_pressure(log);

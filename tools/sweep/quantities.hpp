@@ -12,6 +12,10 @@
 //            NAME_error the standard error over the blocks, ede-stats pressure's)
 //   structure.psi6 or structure.psi6@T (the global bond order |<psi6_j>| of ede-stats psi6 at T, default: the
 //            log's end)
+//   viscosity.NAME[_error] or viscosity.NAME[_error]@T0 (a sheared run: sheared_viscosity from T0, default
+//            the log's start, as ede-stats viscosity --from T0: eta, eta_reduced, rate_reduced, kT,
+//            shear_stress, enskog, enskog_reduced, packing_fraction; _error for eta, eta_reduced, kT and
+//            shear_stress, 0 for the rest)
 // Names are checked before any run starts. Rejected: a plug-in list of quantity objects (the names map to
 // a handful of library calls; a table of functions per name would be longer than the switch).
 #pragma once
