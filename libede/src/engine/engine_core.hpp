@@ -137,7 +137,8 @@ class Engine final : public EngineApi<T> {
       if (!ph.pairs.empty()) o << ", per species pair";
       o << ")";
     }
-    if constexpr (Fx::kThermostat) {
+    // (The sheared engine carries the clock for every scene: only a thermostat that redraws is named.)
+    if constexpr (Fx::kThermostat) if (!s_.thermostat.groups.empty()) {
       std::size_t disks = 0;
       for (const auto& g : s_.thermostat.groups) disks += g.disks.size();
       o << ", Andersen thermostat (" << disks << " disks, " << s_.thermostat.total_rate << " redraws per unit time)";

@@ -22,7 +22,8 @@
 // loader (no engine combines the two axes).
 // The sheared one has the sliding edges' room and realignment clock (room_shear.hpp); no other scene's
 // engine has them compiled in. It carries the thermostat's clock too (drawing about the flow), never due
-// without a [thermostat]: one comparison per event, where a fifteenth engine would double its build time.
+// without a [thermostat]: one comparison per event (measured 1270 -> 1273 instructions per event, a
+// sheared elastic gas of 400 disks), where a fifteenth engine would add its build time.
 // Fourteen per scalar type (eight before the stepped potential, the thermostat and Lees-Edwards):
 // make_engine_as<T> below names them all, and engine_float.cpp, engine_double.cpp,
 // engine_long_double.cpp (and engine_float128.cpp where EDE_HAVE_FLOAT128) instantiate it once each, so
