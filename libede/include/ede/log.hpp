@@ -50,6 +50,7 @@ struct LogInfo {
   double lx = 1, ly = 1;
   BoundaryKind boundary = BoundaryKind::Walls;
   bool lees_edwards = false;           // periodic with sliding images above and below (scene().shear_rate)
+  double shear_rate = 0;               // a Lees-Edwards log's, from its scene (0 otherwise, or without a scene)
   bool rotates = false;                // rough or spinning disks: states and events carry omega
   bool tc_model = false;
   double gx = 0, gy = 0;

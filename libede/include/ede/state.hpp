@@ -55,6 +55,10 @@ struct State {
   ScalarKind scalar = ScalarKind::Double;   // the run's scalar type (a float128 run's state is long double)
   double lx = 1, ly = 1;
   BoundaryKind boundary = BoundaryKind::Walls;
+  // A Lees-Edwards (sheared) box: the x-shift of the periodic image above the box at `time` (the one below
+  // is shifted by minus it), as the run had it; 0 in every other box. The nearest image of a disk across
+  // the top or bottom edge is then shifted by it (docs/physics.md, "Lees-Edwards shear").
+  double shear_offset = 0;
   Column x, y, vx, vy, radius, mass;        // one entry per disk, in id order
   std::vector<std::int32_t> species;        // index into species_names
   std::vector<std::string> species_names;

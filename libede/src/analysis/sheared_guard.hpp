@@ -1,8 +1,9 @@
-// The analyses that pair disks by the periodic nearest image (g(r), g(sigma), S(k), psi6, the pressure's
-// virial, impact statistics) or unwrap displacements across the edges (MSD, VACF: transport_stream.cpp)
-// refuse a Lees-Edwards log: across its sliding edges the image is shifted by the time's offset, and a
-// plain image would give a silently wrong number for every pair or crossing there. (The viscosity's stress
-// walk has its own refusal, with its own advice: stress_walk.cpp.)
+// The analyses that pair disks by the periodic nearest image or walk a log without following the sliding
+// images (g(sigma) three ways, S(k), psi6, the pressure's virial, impact statistics) or unwrap displacements
+// across the edges (MSD, VACF: transport_stream.cpp) refuse a Lees-Edwards log: across its sliding edges
+// the image is shifted by the time's offset, and a plain image would give a silently wrong number for every
+// pair or crossing there. g(r) follows the sliding image (State::shear_offset, structure_cells.hpp), and
+// the stress integral and the viscosity the flow (their own checks: stress_walk.cpp).
 // Rejected: handling the sliding image here (each analysis has its own pair walk; the offset would have to
 // reach all of them): a refusal with the reason until an analysis is made to follow it.
 #pragma once

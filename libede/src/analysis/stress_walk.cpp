@@ -195,7 +195,7 @@ std::string refusal(const Log& log) {
   return "";
 }
 
-std::string sheared_refusal(const Log& log) {
+std::string sheared_stress_refusal(const Log& log) {
   if (log.info().rotates) return "the disks are rough or spin, which this analysis does not treat";
   if (!log.scene()) return "the log carries no scene, so its shear rate is unknown; write it with ede-sim";
   return "";

@@ -16,7 +16,7 @@ namespace ede::stress {
 std::string refusal(const Log& log);
 
 // Why this Lees-Edwards log cannot give a stress integral relative to its flow (empty when it can).
-std::string sheared_refusal(const Log& log);
+std::string sheared_stress_refusal(const Log& log);
 
 // The shear rate of a Lees-Edwards log (from its scene); an error for any other log.
 Result<double> shear_rate_of(const Log& log);

@@ -7,7 +7,6 @@
 
 #include "analysis/structure_cells.hpp"
 #include "ede/structure.hpp"
-#include "analysis/sheared_guard.hpp"
 
 namespace ede {
 
@@ -131,7 +130,6 @@ Result<PairCorrelation> pair_correlation(const State& s, const PairCorrelationOp
 }
 
 Result<PairCorrelation> pair_correlation(const Log& log, const PairCorrelationOptions& o, const FrameTimes& f) {
-  if (std::string why = sheared_refusal(log, "g(r)"); !why.empty()) return Error{why};
   auto times = frame_times(log, f);
   if (!times) return times.error();
   PairCorrelation acc;

@@ -88,7 +88,7 @@ Result<StressIntegral> stress_integral(const Log& log, double from, double bin_w
   const std::string where = log.info().path + ": stress integral: ";
   // A sheared log's integral is taken relative to the flow (its thermostat, if any, drawing about it); any
   // other log must be one the equilibrium analysis takes.
-  const std::string why = log.info().lees_edwards ? stress::sheared_refusal(log) : stress::refusal(log);
+  const std::string why = log.info().lees_edwards ? stress::sheared_stress_refusal(log) : stress::refusal(log);
   if (!why.empty()) return Error{where + why};
   const double end = double(log.info().end_time);
   // The last edge may pass the log's end by the rounding of bins * bin_width; the walk stops at the end.

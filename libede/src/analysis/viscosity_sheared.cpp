@@ -37,7 +37,7 @@ Result<ShearedViscosity> sheared_viscosity(const Log& log, const ShearedOptions&
   if (!info.lees_edwards)
     return Error{where + "the box is not sheared (not a Lees-Edwards log); for an equilibrium run in a periodic box "
                          "use the equilibrium route (shear_viscosity, ede-stats viscosity --max-lag)"};
-  if (const std::string why = stress::sheared_refusal(log); !why.empty()) return Error{where + why};
+  if (const std::string why = stress::sheared_stress_refusal(log); !why.empty()) return Error{where + why};
   auto rate = stress::shear_rate_of(log);
   if (!rate) return Error{where + rate.error().message};
   const double gamma = rate.value();

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "core/scalar_dispatch.hpp"
+#include "core/scalar_math.hpp"
 #include "core/state_of.hpp"
 #include "log/log_stats.hpp"
 #include "replay/log_convert.hpp"
@@ -36,6 +37,9 @@ LogInfo info_of(const LogReader& r) {
   i.species_counts.assign(h.species_names.size(), 0);
   for (const std::uint32_t s : h.species) ++i.species_counts[s];  // the reader checked every index
   i.lx = h.lx, i.ly = h.ly, i.boundary = h.boundary, i.lees_edwards = h.lees_edwards;
+  if (i.lees_edwards)
+    if (auto scene = parse_scene_text(i.scene_text, i.scene_name); scene && scene.value().shear_rate)
+      i.shear_rate = *scene.value().shear_rate;
   i.rotates = h.rotation();
   i.tc_model = h.tc_model, i.gx = h.gx, i.gy = h.gy;
   i.initial_energy = h.initial_energy;
@@ -51,6 +55,15 @@ LogInfo info_of(const LogReader& r) {
   i.complete = r.complete(), i.damaged = r.damaged();
   i.incomplete_reason = r.incomplete_reason(), i.final_status = r.final_status();
   return i;
+}
+
+// The state of a replay, with the images' offset of a Lees-Edwards log at its time computed as the engine
+// does (engine/lees_edwards.hpp: fmod(T(rate) ly t, lx) in the run's type).
+template <class T>
+State public_state(const Replay<T>& r, const LogInfo& i) {
+  State s = state_of(r.particles(), r.time(), r.events_applied(), i.lx, i.ly, i.boundary, i.species_names);
+  if (i.lees_edwards) s.shear_offset = double(ede::fmod(T(i.shear_rate) * T(i.ly) * r.time(), T(i.lx)));
+  return s;
 }
 
 }  // namespace
@@ -78,8 +91,7 @@ Result<State> Log::state_at(Time t) const {
     if (!replay) return replay.error();
     Replay<T>& r = *replay.value();
     if (Status s = r.seek_time(T(t)); !s) return s.error();
-    const LogInfo& i = impl_->info;
-    return state_of(r.particles(), r.time(), r.events_applied(), i.lx, i.ly, i.boundary, i.species_names);
+    return public_state(r, impl_->info);
   });
 }
 
@@ -89,8 +101,7 @@ Result<State> Log::state_at_event(std::uint64_t n) const {
     if (!replay) return replay.error();
     Replay<T>& r = *replay.value();
     if (Status s = r.seek_event(n); !s) return s.error();
-    const LogInfo& i = impl_->info;
-    return state_of(r.particles(), r.time(), r.events_applied(), i.lx, i.ly, i.boundary, i.species_names);
+    return public_state(r, impl_->info);
   });
 }
 

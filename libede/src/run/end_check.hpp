@@ -13,7 +13,8 @@
 // The scan is a cell list over the final positions (computed with the shared drift functions) with two int
 // arrays (4 B per disk and at most two per disk for the cells), and each disk is checked against the disks
 // no larger than itself within its own diameter, so one large disk costs its own area in cells, not N^2.
-// Depths are computed in long double from the run's own positions.
+// Depths are computed in long double from the run's own positions. In a Lees-Edwards box a pair across the
+// top or bottom edge is measured through the sliding image, as the engine pairs it.
 // Rejected: a check in the engine's loop (the engine stays free of run policy, and a check per event costs
 // every run), and setup's PlacementGrid (double positions: coarser than a long double run's contract, and
 // three double arrays per disk).
@@ -29,6 +30,7 @@
 
 #include "ede/number_text.hpp"
 #include "core/particles.hpp"
+#include "core/scalar_math.hpp"
 #include "ede/events.hpp"
 #include "ede/scene.hpp"
 #include "run/scale_checks.hpp"
@@ -43,6 +45,7 @@ struct EndCheckContext {
   double lx = 1, ly = 1;
   bool periodic = false;
   bool gravity = false;
+  double shear_rate = 0;  // a Lees-Edwards box's: pairs across its top and bottom edges meet the sliding image
 };
 
 namespace end_check_detail {
@@ -113,32 +116,50 @@ Worst scan_overlaps(const Particles<T>& p, T time, const EndCheckContext& ctx, l
   CellList cells(ctx.lx, ctx.ly, w, ctx.periodic, n);
   for (std::size_t i = 0; i < n; ++i)
     cells.insert(std::int32_t(i), cells.col((long double)p.x_at(i, time)), cells.row((long double)p.y_at(i, time)));
+  // A Lees-Edwards box: the image above is shifted by the offset the engine has at `time`
+  // (engine/lees_edwards.hpp: fmod(T(rate) ly t, lx) in the run's type).
+  const long double offset =
+      ctx.shear_rate != 0 ? (long double)ede::fmod(T(ctx.shear_rate) * T(ctx.ly) * time, T(ctx.lx)) : 0;
   Worst worst;
   for (std::size_t i = 0; i < n; ++i) {
     const long double xi = (long double)p.x_at(i, time), yi = (long double)p.y_at(i, time);
     const long double ri = (long double)p.disk[i].r, reach = 2 * ri + tolerance;
-    const auto lo_x = std::int64_t(std::floor(double((xi - reach) / cells.wx())));
-    const auto hi_x = std::int64_t(std::floor(double((xi + reach) / cells.wx())));
+    const auto visit = [&](std::int32_t j32) {
+      const std::size_t j = std::size_t(j32);
+      const long double rj = (long double)p.disk[j].r;
+      if (j == i || rj > ri || (rj == ri && j < i)) return;  // each pair once, from its larger disk
+      long double dx = (long double)p.x_at(j, time) - xi, dy = (long double)p.y_at(j, time) - yi;
+      if (ctx.periodic) {
+        const long double rows = std::round(double(dy / ctx.ly));  // +1: j's image below is the nearer
+        dy -= (long double)ctx.ly * rows;
+        dx -= rows * offset;
+        dx -= (long double)ctx.lx * std::round(double(dx / ctx.lx));
+      }
+      const long double contact = ri + rj, depth = contact - std::hypot(dx, dy);
+      if (!(depth > tolerance)) return;
+      if (worst.pairs++ == 0 || depth / contact > worst.depth / worst.contact)
+        worst.i = std::min(i, j), worst.j = std::max(i, j), worst.depth = depth, worst.contact = contact;
+    };
+    const auto cols = [&](long double x) { return std::int64_t(std::floor(double(x / cells.wx()))); };
     const auto lo_y = std::int64_t(std::floor(double((yi - reach) / cells.wy())));
     const auto hi_y = std::int64_t(std::floor(double((yi + reach) / cells.wy())));
-    for_each_cell(lo_y, hi_y, cells.ny(), ctx.periodic, [&](std::int64_t cy) {
-      for_each_cell(lo_x, hi_x, cells.nx(), ctx.periodic, [&](std::int64_t cx) {
-        cells.for_each_in(cx, cy, [&](std::int32_t j32) {
-          const std::size_t j = std::size_t(j32);
-          const long double rj = (long double)p.disk[j].r;
-          if (j == i || rj > ri || (rj == ri && j < i)) return;  // each pair once, from its larger disk
-          long double dx = (long double)p.x_at(j, time) - xi, dy = (long double)p.y_at(j, time) - yi;
-          if (ctx.periodic) {
-            dx -= (long double)ctx.lx * std::round(double(dx / ctx.lx));
-            dy -= (long double)ctx.ly * std::round(double(dy / ctx.ly));
-          }
-          const long double contact = ri + rj, depth = contact - std::hypot(dx, dy);
-          if (!(depth > tolerance)) return;
-          if (worst.pairs++ == 0 || depth / contact > worst.depth / worst.contact)
-            worst.i = std::min(i, j), worst.j = std::max(i, j), worst.depth = depth, worst.contact = contact;
-        });
+    if (offset == 0) {
+      for_each_cell(lo_y, hi_y, cells.ny(), ctx.periodic, [&](std::int64_t cy) {
+        for_each_cell(cols(xi - reach), cols(xi + reach), cells.nx(), ctx.periodic,
+                      [&](std::int64_t cx) { cells.for_each_in(cx, cy, visit); });
       });
-    });
+      continue;
+    }
+    // Rows past the top (bottom) edge are the bottom (top) rows slid by +offset (-offset): their columns
+    // are searched around xi -+ offset. When the search spans every row, every column too.
+    const std::int64_t ny = cells.ny();
+    const bool every_row = hi_y - lo_y + 1 >= ny;
+    for (std::int64_t raw = every_row ? 0 : lo_y; raw <= (every_row ? ny - 1 : hi_y); ++raw) {
+      const std::int64_t k = raw >= 0 ? raw / ny : -((-raw + ny - 1) / ny), cy = raw - k * ny;
+      const long double x = xi - (long double)k * offset;
+      const std::int64_t lo_x = every_row ? 0 : cols(x - reach), hi_x = every_row ? cells.nx() - 1 : cols(x + reach);
+      for_each_cell(lo_x, hi_x, cells.nx(), true, [&](std::int64_t cx) { cells.for_each_in(cx, cy, visit); });
+    }
   }
   return worst;
 }

@@ -43,7 +43,7 @@ class SimulationOf final : public Simulation::Impl {
     // the end asks the end check whether the run may end as it did.
     const Scene& sc = plan_.scene;
     EndCheckContext context{sc.source_name, sc.scalar, sc.lx, sc.ly, sc.boundary == BoundaryKind::Periodic,
-                            sc.physics.has_gravity()};
+                            sc.physics.has_gravity(), sc.shear_rate.value_or(0)};
     guard_ = std::make_unique<FiniteGuard<T>>(
         log_sink, first_event, [context](T time, const Particles<T>& p, RunStatus status) {
           return end_of_run_problem(p, time, status, context);
