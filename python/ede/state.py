@@ -10,11 +10,13 @@ class State:
     x, y, vx, vy, radius, mass: numpy arrays in the run's scalar type (float32, float64 or longdouble),
     bit-identical to the engine's state (and to ``ede-replay --at``); species: int32 index into
     species_names; id: the disks' ids (0..N-1, the arrays' order). Positions are those at ``time``.
+    shear_offset: in a Lees-Edwards (sheared) box, the x-shift of the periodic image above at ``time`` (the one
+    below: minus it), as the run had it; 0 otherwise.
     omega, inertia: angular velocity and moment of inertia per disk for rough (rotating) disks, else None.
     The arrays are views of the library's own buffers: read-only unless copied.
     """
 
-    __slots__ = ("time", "time_text", "events", "scalar", "lx", "ly", "boundary", "x", "y", "vx", "vy",
+    __slots__ = ("time", "time_text", "events", "scalar", "lx", "ly", "boundary", "shear_offset", "x", "y", "vx", "vy",
                  "radius", "mass", "species", "species_names", "omega", "inertia")
 
     def __init__(self, d):

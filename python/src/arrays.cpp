@@ -38,6 +38,7 @@ py::dict state_dict(State&& state) {
   d["scalar"] = to_string(s.scalar);
   d["lx"] = s.lx, d["ly"] = s.ly;
   d["boundary"] = to_string(s.boundary);
+  d["shear_offset"] = s.shear_offset;
   d["x"] = column_array(s.x, owner), d["y"] = column_array(s.y, owner);
   d["vx"] = column_array(s.vx, owner), d["vy"] = column_array(s.vy, owner);
   d["radius"] = column_array(s.radius, owner), d["mass"] = column_array(s.mass, owner);

@@ -25,7 +25,8 @@ py::dict info_dict(const LogInfo& i) {
   d["species_names"] = i.species_names, d["species_counts"] = i.species_counts;
   d["lx"] = i.lx, d["ly"] = i.ly;
   d["boundary"] = to_string(i.boundary);
-  d["lees_edwards"] = i.lees_edwards;  // periodic with sliding images (the rate: the scene's box.shear_rate)
+  d["lees_edwards"] = i.lees_edwards;  // periodic with sliding images
+  d["shear_rate"] = i.shear_rate;      // the scene's box.shear_rate (0 when not sheared)
   d["tc_model"] = i.tc_model;
   d["gravity"] = py::make_tuple(i.gx, i.gy);
   d["initial_energy"] = i.initial_energy;

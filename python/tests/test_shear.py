@@ -50,6 +50,12 @@ def test_a_sheared_log_names_its_box_and_its_crossings(tmp_path):
     assert after.vy[i] == before.vy[i]
     with pytest.raises(Exception, match="Lees-Edwards"):
         ede.msd(lg, max_lag=0.5, lag_step=0.1)
+    # The images' offset at a state's time, as the engine computes it; g(r) pairs through the sliding image.
+    assert lg.info["shear_rate"] == 1.0
+    st = lg.state(t=2.5)
+    assert st.shear_offset == (1.0 * 4.0 * float(st.time)) % 4.0
+    g = ede.pair_correlation(lg, 1.0, bins=20, t0=2.5)
+    assert g["count"].sum() > 0
 
 
 def test_an_unsheared_log_says_so(gas_log):
