@@ -64,6 +64,11 @@ std::vector<EffectConfig> effect_configs() {
       // that engine; the all-effects engine has none, so that column stays empty.
       {"Lees-Edwards (rate 0)", {"box.boundary=\"lees-edwards\"", "box.shear_rate=0"}, false},
       {"Lees-Edwards (rate 1)", {"box.boundary=\"lees-edwards\"", "box.shear_rate=1"}, false},
+      // The same with the thermostat drawing about the flow (the sheared engine carries its clock in every
+      // sheared scene: the row above pays one comparison per event for it).
+      {"Lees-Edwards (rate 1), thermostat (nu = 0.01)",
+       {"box.boundary=\"lees-edwards\"", "box.shear_rate=1", "thermostat.temperature=1", "thermostat.rate=0.01"},
+       false},
       {"every effect (weak g)", {inelastic_pairs, "physics.pairs[0].restitution=0.9", "physics.wall_restitution=0.9",
                                  "physics.tc=1e-5", "physics.gravity=[0, -0.001]"}},
   };

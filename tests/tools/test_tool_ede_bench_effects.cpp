@@ -35,6 +35,8 @@ TEST_CASE("ede-bench effects: a row per effect, the engine it selects, the all-e
                           "| gravity, strong (g = 1) | walls, elastic, gravity (0, -1)",
                           "| thermostat (nu = 0.01) | walls, elastic, Andersen thermostat (10000 disks, 100 redraws",
                           "| Lees-Edwards (rate 1) | lees-edwards, shear rate 1, elastic, grid",
+                          "| Lees-Edwards (rate 1), thermostat (nu = 0.01) | lees-edwards, shear rate 1, elastic, "
+                          "Andersen thermostat (10000 disks, 100 redraws",
                           "| every effect (weak g) | walls, inelastic (xi=0.98, 1 species pairs apart, xi_w=0.9), TC "
                           "(tc=1e-05), gravity (0, -0.001)"})
     CHECK(contains(r.out, row));
@@ -42,7 +44,7 @@ TEST_CASE("ede-bench effects: a row per effect, the engine it selects, the all-e
   CHECK(contains(r.out, "(10000 disks), 20000 events per run, 1 rounds"));
 
   const std::vector<std::string> rows = lines(read_file(csv));
-  REQUIRE(rows.size() == 19);  // the header, 18 rows (two of them square wells, two the thermostat, two shear)
+  REQUIRE(rows.size() == 20);  // the header, 19 rows (two square wells, two the thermostat, three shear)
   CHECK(rows[0].rfind("effects,engine,ns_per_event,cycles_per_event,ratio_to_elastic,all_effects_ns_per_event", 0) == 0);
   for (std::size_t k = 1; k < rows.size(); ++k) {
     // The figures after the two quoted fields: ns/event, cycles/event, ratio to elastic, all-effects ns/event.
