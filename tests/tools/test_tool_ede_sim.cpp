@@ -235,3 +235,30 @@ TEST_CASE("one scene run from two directories writes the same log, byte for byte
   REQUIRE(a.size() > 1000);
   CHECK(a == b);
 }
+
+TEST_CASE("ede-sim --continue of a sheared run: refused with the reason where the images were shifted, exact "
+          "where they were aligned", "[tool][ede-sim][shear]") {
+  // 900 disks at packing 0.45 from a lattice, sheared at 0.5 in a 30 x 30 box: the images are aligned
+  // every lx / (rate ly) = 2 time units. At t = 3 they are shifted by 15, and a new run (which starts them
+  // aligned) would put disks touching across the top edge onto each other: refused, naming the aligned
+  // times. From t = 2 the continuation starts, and its first state is the source's at t = 2.
+  const std::string scene = temp_path("sheared-continue.toml"), log = temp_path("sheared-continue.ede");
+  std::ofstream(scene) << "seed = 6\n[box]\nsize = [30.0, 30.0]\nboundary = \"lees-edwards\"\nshear_rate = 0.5\n"
+                          "[physics]\nrestitution = 0.95\n[[species]]\nname = \"gas\"\ncount = 900\n"
+                          "radius = 0.37846987830302403\n[species.placement]\nkind = \"lattice\"\n"
+                          "[species.velocity]\nkind = \"maxwell\"\ntemperature = 1.0\n[stop]\ntime = 3.0\n";
+  REQUIRE(run_tool("ede-sim", scene + " -q -o " + log, "sheared-continue-source").status == 0);
+  const ToolRun shifted = run_tool("ede-sim", "-q --continue " + log + " -o " + temp_path("sheared-continued.ede"),
+                                   "sheared-continue-shifted");
+  CHECK(shifted.status != 0);
+  CHECK_THAT(shifted.err, Catch::Matchers::Contains("overlap") && Catch::Matchers::Contains("Lees-Edwards") &&
+                              Catch::Matchers::Contains("a multiple of lx / (shear_rate ly) = 2"));
+  const std::string aligned = temp_path("sheared-continued-aligned.ede");
+  const ToolRun ok = run_tool("ede-sim", "-q --continue " + log + " --at 2 -o " + aligned, "sheared-continue-aligned");
+  INFO(ok.err);
+  REQUIRE(ok.status == 0);
+  const ede::State a = ede::Log::open(log).value().state_at(2).value();
+  const ede::State b = ede::Log::open(aligned).value().state_at_event(0).value();
+  CHECK(a.shear_offset == 0);
+  for (std::size_t i = 0; i < a.size(); ++i) CHECK((a.x[i] == b.x[i] && a.y[i] == b.y[i] && a.vx[i] == b.vx[i]));
+}

@@ -19,7 +19,24 @@ struct Source {
   InitialState initial;
   std::string digest;
   double at = 0;
+  // A sheared (Lees-Edwards) source log: its images' offset at `at`, its rate and box (else 0).
+  double shear_offset = 0, shear_rate = 0;
 };
+
+// Why a start from a sheared log's state may overlap where the source did not: a new run starts its
+// images' offset at 0 (engine/lees_edwards.hpp), so at a time the source's images were shifted, disks
+// touching across the top or bottom edge land on each other's plain images. The times at which the images
+// are aligned (offset 0) continue the run exactly.
+std::string shifted_images_hint(const Source& src, double lx, double ly) {
+  if (src.shear_offset == 0 || !(src.shear_rate > 0)) return "";
+  const double period = lx / (src.shear_rate * ly);
+  return " The state is from a sheared (Lees-Edwards) log at t = " + exact_double(src.at) +
+         ", where its images above and below were shifted by " + general_text(src.shear_offset, 6) +
+         "; a new run starts with them aligned (the offset is not carried over yet), which can put disks that "
+         "touch across the top or bottom edge onto each other. Fix: start from a time at which the images are "
+         "aligned, a multiple of lx / (shear_rate ly) = " + general_text(period, 10) +
+         " (start.at, ede-sim --at), which continues the run exactly; or continue an interrupted run with --resume.";
+}
 
 Result<Source> from_log(const StartSpec& start, const std::string& path, const std::string& scene_name) {
   auto log = Log::open(path);
@@ -35,12 +52,15 @@ Result<Source> from_log(const StartSpec& start, const std::string& path, const s
     if (!s) return s.error();
     src.initial = initial_state_of(s.value());
     src.at = *start.at;
+    src.shear_offset = s.value().shear_offset;
   } else {
     auto s = log.value().state_at_end();
     if (!s) return s.error();
     src.initial = initial_state_of(s.value());
     src.at = double(s.value().time);
+    src.shear_offset = s.value().shear_offset;
   }
+  src.shear_rate = info.shear_rate;
   auto digest = log.value().content_digest();
   if (!digest) return digest.error();
   src.digest = digest.value();
@@ -131,8 +151,13 @@ Result<StartedRun> start_from_state(const Scene& scene) {
   run.initial.ly = scene.ly;
   adjust_velocities(start, run.initial);
   if (Status s = check_pair_names(scene, run.initial); !s) return s.error();
-  if (Status s = check_initial_state(run.initial, scene.boundary, scene.source_name + " (start from " + path + ")"); !s)
+  if (Status s = check_initial_state(run.initial, scene.boundary, scene.source_name + " (start from " + path + ")"); !s) {
+    if (const std::string hint = shifted_images_hint(src.value(), scene.lx, scene.ly); !hint.empty()) {
+      const std::string& m = s.error().message;
+      return Error{m + (!m.empty() && m.back() == '.' ? "" : ".") + hint, s.error().kind};
+    }
     return s.error();
+  }
   if (Status s = check_disks_clear_of_segments(run.initial, scene.physics.segments,
                                                scene.source_name + " (start from " + path + ")");
       !s)
