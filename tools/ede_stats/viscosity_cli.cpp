@@ -152,14 +152,13 @@ int run_viscosity(const ViscosityCli& c) {
                    " blocks)");
   s.add("kT", brief(r.kT) + " (K' / (N - 1), time average)");
   s.add("pressure", brief(r.pressure) + " ((P_xx + P_yy) / 2)");
-  s.add("mean P_xy", brief(r.mean_shear_stress) + " ± " + brief(r.mean_shear_stress_error, 2) +
-                         "; mean (P_xx - P_yy)/2 " + brief(r.mean_normal_stress) + " ± " +
-                         brief(r.mean_normal_stress_error, 2) + " (0 in equilibrium)");
-  s.add("eta", brief(r.viscosity) + " ± " + brief(r.viscosity_error, 2) + " (the Helfand moment's slope over lags " +
+  s.add("mean P_xy", plus_minus(r.mean_shear_stress, r.mean_shear_stress_error) + "; mean (P_xx - P_yy)/2 " +
+                         plus_minus(r.mean_normal_stress, r.mean_normal_stress_error) + " (0 in equilibrium)");
+  s.add("eta", plus_minus(r.viscosity, r.viscosity_error) + " (the Helfand moment's slope over lags " +
                    brief(r.lag[(r.lag.size() - 1) / 2]) + " to " + brief(r.lag.back()) + ")");
-  s.add("eta(t) (Helfand)", brief(r.eta.back()) + " ± " + brief(r.error.back(), 2) + " at lag " + brief(r.lag.back()) +
+  s.add("eta(t) (Helfand)", plus_minus(r.eta.back(), r.error.back()) + " at lag " + brief(r.lag.back()) +
                              " (P_xy: " + brief(r.eta_xy.back()) + ", (P_xx - P_yy)/2: " + brief(r.eta_normal.back()) + ")");
-  s.add("eta (Green-Kubo)", brief(r.green_kubo.back()) + " ± " + brief(r.green_kubo_error.back(), 2) + " at lag " +
+  s.add("eta (Green-Kubo)", plus_minus(r.green_kubo.back(), r.green_kubo_error.back()) + " at lag " +
                                 brief(r.lag.back()));
   if (r.enskog == r.enskog)
     s.add("Enskog eta_E", brief(r.enskog) + " (phi " + brief(r.packing_fraction, 4) + ", g(sigma) " +

@@ -22,11 +22,12 @@ EnskogReference enskog_reference(const Log& log, const State& s, double area, do
   const double r = s.radius[0], m = s.mass[0];
   out.sigma = 2 * r, out.mass = m;
   out.packing_fraction = double(s.size()) * std::numbers::pi * r * r / area;
-  if (auto scene = log.scene(); scene && scene.value().physics.has_steps()) {
+  const auto scene = log.scene();
+  if (scene && scene.value().physics.has_steps()) {
     out.note = "not applicable: square wells or shoulders (Enskog's formula is for hard disks)";
     return out;
   }
-  if (auto scene = log.scene(); scene && !scene.value().physics.elastic()) {
+  if (scene && !scene.value().physics.elastic()) {
     out.note = "not applicable: the collisions are inelastic (a granular gas's viscosity differs from Enskog's "
                "elastic one by terms in 1 - xi^2)";
     return out;

@@ -27,6 +27,7 @@
 #include <string>
 
 #include "analysis/transport_stream.hpp"
+#include "core/sliding_images.hpp"
 #include "ede/number_text.hpp"
 
 namespace ede::stress {
@@ -37,9 +38,9 @@ namespace {
 // across the sliding edge (an equilibrium run: rate 0, plain periodic images).
 struct Flow {
   long double rate = 0, lx = 1, ly = 1;
-  // The images' offset at t, as the engine computes it (engine/lees_edwards.hpp: fmod(rate ly t, lx); to
-  // the long double here, which is far closer than the contact distance needs).
-  long double offset(long double t) const { return std::fmod(rate * ly * t, lx); }
+  // The images' offset at t (core/sliding_images.hpp), in long double: the run's own type's rounding of it
+  // is far below what the separation of a pair at contact needs.
+  long double offset(long double t) const { return images_offset(image_slide(double(rate), ly), t, lx); }
   // The separation r_i - r_j of a pair at contact at time t: the nearest image, through the sliding one
   // when the pair is across the top or bottom edge (a contact is far closer than half a box).
   void separation(long double& dx, long double& dy, long double t) const {
@@ -201,23 +202,11 @@ std::string sheared_stress_refusal(const Log& log) {
   return "";
 }
 
-Result<double> shear_rate_of(const Log& log) {
-  const std::string where = log.info().path + ": ";
-  if (!log.info().lees_edwards) return Error{where + "the box is not sheared (not a Lees-Edwards log)"};
-  auto scene = log.scene();
-  if (!scene) return Error{where + "the log carries no scene, so its shear rate is unknown; write it with ede-sim"};
-  return scene.value().shear_rate.value_or(0);
-}
-
 Result<StressIntegral> integrate(const Log& log, double from, double bin_width, std::size_t bins) {
   const std::string where = log.info().path + ": stress integral: ";
   Flow flow;
   flow.lx = log.info().lx, flow.ly = log.info().ly;
-  if (log.info().lees_edwards) {
-    auto rate = shear_rate_of(log);
-    if (!rate) return rate.error();
-    flow.rate = rate.value();
-  }
+  flow.rate = log.info().lees_edwards ? log.info().shear_rate : 0;  // from the scene, read at open
   auto s = log.state_at(from);
   if (!s) return s.error();
   // The last edge, or the log's end where the rounding of bins * bin_width passes it.

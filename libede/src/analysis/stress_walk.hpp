@@ -18,9 +18,6 @@ std::string refusal(const Log& log);
 // Why this Lees-Edwards log cannot give a stress integral relative to its flow (empty when it can).
 std::string sheared_stress_refusal(const Log& log);
 
-// The shear rate of a Lees-Edwards log (from its scene); an error for any other log.
-Result<double> shear_rate_of(const Log& log);
-
 // The stress integral over `bins` bins of width `bin_width` from `from`, relative to the shear flow in a
 // Lees-Edwards log; the caller has checked the log (refusal, or the sheared route's checks) and that
 // from + bins * bin_width lies within it.

@@ -3,8 +3,8 @@
 // the window, and its limit gamma -> 0 over runs at several rates. With W_b the integral of V P_ab over
 // block b (width w) and K_b that of sum m c^2:
 //   P_xy,b = (W_xy,b + W_yx,b) / (2 V w),   kT_b = K_b / (2 (N - 1) w),   eta_b = -P_xy,b / gamma,
-// and every mean comes with the standard error of its block values (blocks far longer than the stress's
-// correlation time, a few collision times, are nearly independent). Reduced units use the disks' diameter
+// and every mean comes with the standard error of its block values (block_stats, ede/block_average.hpp;
+// blocks far longer than the stress's correlation time, a few collision times, are nearly independent). Reduced units use the disks' diameter
 // and mass: hard disks have no energy scale but kT, so eta sigma / sqrt(m kT) is a function of phi and
 // gamma sigma sqrt(m / kT) alone, and runs whose steady temperatures differ (a thermostat holds the
 // temperature only up to the heating it removes) still fall on one curve. Formulas, the thermostat's
@@ -14,22 +14,12 @@
 
 #include "analysis/enskog_reference.hpp"
 #include "analysis/stress_walk.hpp"
-#include "analysis/transport_stream.hpp"
+#include "ede/block_average.hpp"
 #include "ede/kinetic_theory.hpp"
 #include "ede/number_text.hpp"
 #include "ede/viscosity.hpp"
 
 namespace ede {
-
-namespace {
-
-double mean_of_blocks(const std::vector<double>& v) {
-  double m = 0;
-  for (const double x : v) m += x;
-  return m / double(v.size());
-}
-
-}  // namespace
 
 Result<ShearedViscosity> sheared_viscosity(const Log& log, const ShearedOptions& o) {
   const LogInfo& info = log.info();
@@ -38,9 +28,7 @@ Result<ShearedViscosity> sheared_viscosity(const Log& log, const ShearedOptions&
     return Error{where + "the box is not sheared (not a Lees-Edwards log); for an equilibrium run in a periodic box "
                          "use the equilibrium route (shear_viscosity, ede-stats viscosity --max-lag)"};
   if (const std::string why = stress::sheared_stress_refusal(log); !why.empty()) return Error{where + why};
-  auto rate = stress::shear_rate_of(log);
-  if (!rate) return Error{where + rate.error().message};
-  const double gamma = rate.value();
+  const double gamma = info.shear_rate;
   if (!(gamma > 0)) return Error{where + "the shear rate is 0: there is no mean stress to divide by it"};
   const double from = o.from.value_or(info.start_time), to = o.to.value_or(double(info.end_time));
   if (!(from >= info.start_time && to <= double(info.end_time) && from < to))
@@ -66,13 +54,14 @@ Result<ShearedViscosity> sheared_viscosity(const Log& log, const ShearedOptions&
     normal[b] = (w.xx[b] - w.yy[b]) * to_stress;
   }
   const double span = to - from;
-  out.shear_stress = mean_of_blocks(out.block_shear_stress);
-  out.shear_stress_error = transport::standard_error(out.block_shear_stress);
+  const BlockStats stress = block_stats(out.block_shear_stress), difference = block_stats(normal);
+  const BlockStats temperature = block_stats(out.block_kT);
+  out.shear_stress = stress.mean, out.shear_stress_error = stress.error;
   out.kinetic_shear_stress = double(w.kinetic_xy / (long double)(w.area * span));
   out.collisional_shear_stress = double((w.impulse_xy + w.impulse_yx) / 2 / (long double)(w.area * span));
-  out.normal_stress_difference = mean_of_blocks(normal), out.normal_stress_difference_error = transport::standard_error(normal);
+  out.normal_stress_difference = difference.mean, out.normal_stress_difference_error = difference.error;
   out.pressure = double((w.kinetic_xx + w.kinetic_yy + w.impulse_xx + w.impulse_yy) / 2 / (long double)(w.area * span));
-  out.kT = mean_of_blocks(out.block_kT), out.kT_error = transport::standard_error(out.block_kT);
+  out.kT = temperature.mean, out.kT_error = temperature.error;
   if (!(out.kT > 0)) return Error{where + "the disks do not move relative to the flow (kT = 0)"};
   out.viscosity = -out.shear_stress / gamma, out.viscosity_error = out.shear_stress_error / gamma;
 
@@ -89,7 +78,7 @@ Result<ShearedViscosity> sheared_viscosity(const Log& log, const ShearedOptions&
     std::vector<double> reduced(o.blocks);
     for (std::size_t b = 0; b < o.blocks; ++b)
       reduced[b] = out.block_viscosity[b] * e.sigma / std::sqrt(e.mass * out.block_kT[b]);
-    out.reduced_viscosity_error = transport::standard_error(reduced);
+    out.reduced_viscosity_error = block_stats(reduced).error;
   } else {
     out.reduced_rate = out.reduced_viscosity = out.reduced_viscosity_error = std::numeric_limits<double>::quiet_NaN();
   }

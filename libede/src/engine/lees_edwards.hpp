@@ -2,8 +2,8 @@
 // the box slide in x with velocity +u and -u, u = shear_rate * ly. An engine without it holds NoShear.
 //
 // The images' offset at time t is offset(t) = fmod(u * t, lx), in [0, lx): a pure function of the time,
-// one rounding (the product; fmod is exact). So the engine needs no state for it, a resumed run computes
-// what the original did, and its error never accumulates: it is the rounding of u * t, as large as the
+// one rounding (the product; fmod is exact; core/sliding_images.hpp, which the log's readers share). So the
+// engine needs no state for it, a resumed run computes what the original did, and its error never accumulates: it is the rounding of u * t, as large as the
 // position error of any disk moving at u after a time t (the time itself is known to epsilon * t).
 // Rejected: an offset carried along and advanced at every event (its rounding would depend on the events,
 // compound over a run, and a resumable keyframe would have to store it).
@@ -19,6 +19,7 @@
 
 #include "core/geometry.hpp"
 #include "core/scalar_math.hpp"
+#include "core/sliding_images.hpp"
 
 namespace ede {
 
@@ -36,7 +37,7 @@ struct ShearClock {
   void setup(double shear_rate, T lx, T ly, std::int32_t nx) {
     rate = T(shear_rate);
     half_height = ly / T(2);
-    slide = T(shear_rate) * ly;
+    slide = image_slide(shear_rate, ly);
     cell_width = lx / T(nx);
     period = slide > 0 ? cell_width / (T(2) * slide) : kNever<T>;
   }
@@ -45,7 +46,7 @@ struct ShearClock {
   // The thermostat draws about it (room_thermostat.hpp).
   T flow(T y) const { return rate * (y - half_height); }
   // The image above is shifted by +offset(t) in x, the one below by -offset(t).
-  T offset(T t, T lx) const { return ede::fmod(slide * t, lx); }
+  T offset(T t, T lx) const { return images_offset(slide, t, lx); }
   // The column of the grid the offset falls in (0 .. nx - 1).
   std::int32_t column_of(T offset, std::int32_t nx) const {
     const T f = ede::floor(offset / cell_width);

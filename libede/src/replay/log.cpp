@@ -12,7 +12,7 @@
 #include <utility>
 
 #include "core/scalar_dispatch.hpp"
-#include "core/scalar_math.hpp"
+#include "core/sliding_images.hpp"
 #include "core/state_of.hpp"
 #include "log/log_stats.hpp"
 #include "replay/log_convert.hpp"
@@ -57,12 +57,12 @@ LogInfo info_of(const LogReader& r) {
   return i;
 }
 
-// The state of a replay, with the images' offset of a Lees-Edwards log at its time computed as the engine
-// does (engine/lees_edwards.hpp: fmod(T(rate) ly t, lx) in the run's type).
+// The state of a replay, with the images' offset of a Lees-Edwards log at its time as the run had it
+// (core/sliding_images.hpp, in the run's type).
 template <class T>
 State public_state(const Replay<T>& r, const LogInfo& i) {
   State s = state_of(r.particles(), r.time(), r.events_applied(), i.lx, i.ly, i.boundary, i.species_names);
-  if (i.lees_edwards) s.shear_offset = double(ede::fmod(T(i.shear_rate) * T(i.ly) * r.time(), T(i.lx)));
+  if (i.lees_edwards) s.shear_offset = double(images_offset(image_slide(i.shear_rate, T(i.ly)), r.time(), T(i.lx)));
   return s;
 }
 

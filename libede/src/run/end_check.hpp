@@ -30,7 +30,7 @@
 
 #include "ede/number_text.hpp"
 #include "core/particles.hpp"
-#include "core/scalar_math.hpp"
+#include "core/sliding_images.hpp"
 #include "ede/events.hpp"
 #include "ede/scene.hpp"
 #include "run/scale_checks.hpp"
@@ -116,10 +116,9 @@ Worst scan_overlaps(const Particles<T>& p, T time, const EndCheckContext& ctx, l
   CellList cells(ctx.lx, ctx.ly, w, ctx.periodic, n);
   for (std::size_t i = 0; i < n; ++i)
     cells.insert(std::int32_t(i), cells.col((long double)p.x_at(i, time)), cells.row((long double)p.y_at(i, time)));
-  // A Lees-Edwards box: the image above is shifted by the offset the engine has at `time`
-  // (engine/lees_edwards.hpp: fmod(T(rate) ly t, lx) in the run's type).
+  // A Lees-Edwards box: the image above is shifted by the offset the engine has at `time`.
   const long double offset =
-      ctx.shear_rate != 0 ? (long double)ede::fmod(T(ctx.shear_rate) * T(ctx.ly) * time, T(ctx.lx)) : 0;
+      ctx.shear_rate != 0 ? (long double)images_offset(image_slide(ctx.shear_rate, T(ctx.ly)), time, T(ctx.lx)) : 0;
   Worst worst;
   for (std::size_t i = 0; i < n; ++i) {
     const long double xi = (long double)p.x_at(i, time), yi = (long double)p.y_at(i, time);
